@@ -1,0 +1,30 @@
+# Every dependency is a Debian package (installed by ./lbdem); nothing is downloaded here.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(OpenMP REQUIRED COMPONENTS CXX)
+find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(tomlplusplus 3 REQUIRED)
+find_package(CLI11 2 REQUIRED)
+find_package(Catch2 2 REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+
+# The plotting tools need Debian's python3 with numpy, h5py and matplotlib; another python3 may
+# come first on PATH without them, so probe the candidates and keep the first that imports all.
+set(LBDEM_PYTHON "" CACHE FILEPATH "python3 with numpy, h5py, matplotlib (found automatically)")
+if(NOT LBDEM_PYTHON)
+  foreach(cand /usr/bin/python3 python3)
+    find_program(_py NAMES ${cand} NO_CACHE)
+    if(_py)
+      execute_process(COMMAND ${_py} -c "import numpy, h5py, matplotlib"
+                      RESULT_VARIABLE _rc OUTPUT_QUIET ERROR_QUIET)
+      if(_rc EQUAL 0)
+        set(LBDEM_PYTHON ${_py} CACHE FILEPATH "python3 with numpy, h5py, matplotlib" FORCE)
+        break()
+      endif()
+    endif()
+    unset(_py)
+  endforeach()
+endif()
+if(NOT LBDEM_PYTHON)
+  message(WARNING "no python3 with numpy/h5py/matplotlib found: runs will not make PNG plots")
+endif()

@@ -1,0 +1,358 @@
+#include "core/config.hpp"
+
+#include "core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lbdem {
+
+struct Config::State {
+  toml::table input;     // what the user gave (file + --set)
+  toml::table resolved;  // input plus every default that was read
+  std::set<std::string> known;
+  std::string source;
+};
+
+namespace {
+
+// "a.b[2].c" -> {"a", "b", "[2]", "c"}
+std::vector<std::string> split_path(std::string_view p) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : p) {
+    if (c == '.') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else if (c == '[') {
+      if (!cur.empty()) out.push_back(cur);
+      cur = "[";
+    } else if (c == ']') {
+      cur += ']';
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+// Navigates (creating tables as needed) to the parent of the last component and returns it.
+toml::table* parent_table(toml::table& root, const std::vector<std::string>& parts) {
+  toml::node* node = &root;
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
+    const std::string& c = parts[k];
+    if (c.front() == '[') {
+      auto* arr = node->as_array();
+      const auto idx = std::stoul(c.substr(1, c.size() - 2));
+      if (!arr || idx >= arr->size()) return nullptr;
+      node = arr->get(idx);
+    } else {
+      auto* tbl = node->as_table();
+      if (!tbl) return nullptr;
+      if (!tbl->contains(c)) tbl->insert(c, toml::table{});
+      node = tbl->get(c);
+    }
+  }
+  return node ? node->as_table() : nullptr;
+}
+
+std::string describe(const toml::node& n) {
+  std::ostringstream os;
+  if (auto* s = n.as_string()) {
+    os << '"' << s->get() << '"';
+  } else {
+    os << n;
+  }
+  return os.str();
+}
+
+void collect_unknown(const toml::table& t, const std::string& prefix,
+                     const std::set<std::string>& known, std::vector<std::string>& out) {
+  for (auto&& [k, v] : t) {
+    const std::string p = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (auto* sub = v.as_table()) {
+      collect_unknown(*sub, p, known, out);
+    } else if (auto* arr = v.as_array(); arr && arr->is_array_of_tables() && !arr->empty()) {
+      for (std::size_t i = 0; i < arr->size(); ++i)
+        collect_unknown(*arr->get(i)->as_table(), p + "[" + std::to_string(i) + "]", known, out);
+    } else if (!known.count(p)) {
+      out.push_back(p);
+    }
+  }
+}
+
+std::string strip_indices(std::string_view p) {
+  std::string s;
+  bool in = false;
+  for (char c : p) {
+    if (c == '[') in = true;
+    if (!in) s += c;
+    if (c == ']') in = false;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string nearest(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::numeric_limits<std::size_t>::max();
+  for (const auto& c : candidates) {
+    const auto d = edit_distance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+Config Config::from_string(std::string_view text, const std::string& source) {
+  auto s = std::make_shared<State>();
+  s->source = source;
+  try {
+    s->input = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw InputError(source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column), "",
+                     std::string(e.description()), "correct the TOML syntax at that line");
+  }
+  s->resolved = s->input;
+  return Config(s, "");
+}
+
+Config Config::from_file(const std::string& path) {
+  try {
+    auto s = std::make_shared<State>();
+    s->source = path;
+    s->input = toml::parse_file(path);
+    s->resolved = s->input;
+    return Config(s, "");
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    if (b.line == 0)
+      throw InputError("--config", path, "cannot read the file", "give the path of a TOML file");
+    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column), "",
+                     std::string(e.description()), "correct the TOML syntax at that line");
+  }
+}
+
+void Config::set_override(std::string_view assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos || eq == 0)
+    throw InputError("--set", std::string(assignment), "expected key.path=value",
+                     "write for example --set dem.end_time=0.5");
+  std::string key(assignment.substr(0, eq));
+  std::string value(assignment.substr(eq + 1));
+  key.erase(0, key.find_first_not_of(' '));
+  key.erase(key.find_last_not_of(' ') + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{{"v", value}};  // a bare word: take it as a string
+  }
+  const auto parts = split_path(key);
+  for (toml::table* root : {&s_->input, &s_->resolved}) {
+    toml::table* parent = parent_table(*root, parts);
+    if (!parent || parts.back().front() == '[')
+      throw InputError("--set", std::string(assignment), "cannot place this key in the config",
+                       "name a key inside a table, e.g. --set particles.count=1000");
+    parent->insert_or_assign(parts.back(), *parsed.get("v"));
+  }
+}
+
+std::string Config::path(std::string_view key) const {
+  return prefix_.empty() ? std::string(key) : prefix_ + "." + std::string(key);
+}
+
+const toml::node* Config::find(std::string_view key) const {
+  auto v = s_->input.at_path(path(key));
+  return v.node();
+}
+
+bool Config::has(std::string_view key) const { return find(key) != nullptr; }
+
+void Config::record(std::string_view key, toml::node&& value_if_absent) const {
+  const std::string p = path(key);
+  s_->known.insert(p);
+  if (s_->resolved.at_path(p)) return;
+  const auto parts = split_path(p);
+  if (toml::table* parent = parent_table(s_->resolved, parts))
+    parent->insert(parts.back(), std::move(value_if_absent));
+}
+
+Config Config::section(std::string_view key) const { return Config(s_, path(key)); }
+
+std::vector<Config> Config::table_array(std::string_view key) const {
+  std::vector<Config> out;
+  const toml::node* n = find(key);
+  if (!n) return out;
+  const auto* arr = n->as_array();
+  if (!arr || !arr->is_array_of_tables())
+    throw InputError(path(key), describe(*n), "expected an array of tables",
+                     "write each entry as [[" + path(key) + "]]");
+  for (std::size_t i = 0; i < arr->size(); ++i)
+    out.push_back(Config(s_, path(key) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+void Config::check_range(std::string_view key, double v, const Range& r) const {
+  const bool lo_bad = r.lo_open ? !(v > r.lo) : !(v >= r.lo);
+  const bool hi_bad = r.hi_open ? !(v < r.hi) : !(v <= r.hi);
+  if (!std::isfinite(v) || lo_bad || hi_bad) {
+    std::string want;
+    if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
+    if (std::isfinite(r.hi)) want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
+    throw InputError(path(key), to_text(v), "must be " + (want.empty() ? "finite" : want),
+                     r.fix.empty() ? "give a value in that range" : std::string(r.fix));
+  }
+}
+
+double Config::get(std::string_view key, double def, Range r) const {
+  const toml::node* n = find(key);
+  double v = def;
+  if (n) {
+    if (auto x = n->value<double>()) {
+      v = *x;
+    } else {
+      throw InputError(path(key), describe(*n), "expected a number",
+                       "write a number in SI units, e.g. 1e-3");
+    }
+  }
+  check_range(key, v, r);
+  record(key, toml::value<double>(v));
+  return v;
+}
+
+double Config::require(std::string_view key, Range r) const {
+  if (!find(key))
+    throw InputError(path(key), "", "missing", "add " + path(key) + " = <value> to the config");
+  return get(key, 0.0, r);
+}
+
+std::int64_t Config::get_int(std::string_view key, std::int64_t def, Range r) const {
+  const toml::node* n = find(key);
+  std::int64_t v = def;
+  if (n) {
+    if (auto x = n->as_integer()) {
+      v = x->get();
+    } else if (auto d = n->value<double>(); d && std::floor(*d) == *d && std::abs(*d) < 9e15) {
+      v = static_cast<std::int64_t>(*d);
+    } else {
+      throw InputError(path(key), describe(*n), "expected an integer", "write a whole number");
+    }
+  }
+  check_range(key, static_cast<double>(v), r);
+  record(key, toml::value<std::int64_t>(v));
+  return v;
+}
+
+bool Config::get_bool(std::string_view key, bool def) const {
+  const toml::node* n = find(key);
+  bool v = def;
+  if (n) {
+    if (auto x = n->value<bool>()) {
+      v = *x;
+    } else {
+      throw InputError(path(key), describe(*n), "expected true or false", "write true or false");
+    }
+  }
+  record(key, toml::value<bool>(v));
+  return v;
+}
+
+std::string Config::get_string(std::string_view key, std::string_view def) const {
+  const toml::node* n = find(key);
+  std::string v(def);
+  if (n) {
+    if (auto x = n->value<std::string>()) {
+      v = *x;
+    } else {
+      throw InputError(path(key), describe(*n), "expected a string", "write the value in quotes");
+    }
+  }
+  record(key, toml::value<std::string>(v));
+  return v;
+}
+
+std::string Config::get_choice(std::string_view key, std::string_view def,
+                               const std::vector<std::string>& choices) const {
+  std::string v = get_string(key, def);
+  if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+    throw InputError(path(key), "\"" + v + "\"", "unknown choice; known: " + list,
+                     "did you mean \"" + nearest(v, choices) + "\"?");
+  }
+  return v;
+}
+
+std::vector<double> Config::get_list(std::string_view key, const std::vector<double>& def) const {
+  const toml::node* n = find(key);
+  std::vector<double> v = def;
+  if (n) {
+    const auto* arr = n->as_array();
+    if (!arr) throw InputError(path(key), describe(*n), "expected an array of numbers", "write [a, b, ...]");
+    v.clear();
+    for (const auto& e : *arr) {
+      auto x = e.value<double>();
+      if (!x) throw InputError(path(key), describe(*n), "expected an array of numbers", "write [a, b, ...]");
+      v.push_back(*x);
+    }
+  }
+  toml::array a;
+  for (double x : v) a.push_back(x);
+  record(key, std::move(a));
+  return v;
+}
+
+Vec3 Config::get_vec3(std::string_view key, const Vec3& def) const {
+  const auto v = get_list(key, {def.x(), def.y(), def.z()});
+  if (v.size() != 3) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + to_text(v[i]);
+    throw InputError(path(key), text + "]", "expected three numbers [x, y, z]", "write [x, y, z] in SI units");
+  }
+  return {v[0], v[1], v[2]};
+}
+
+Vec3 Config::require_vec3(std::string_view key) const {
+  if (!find(key))
+    throw InputError(path(key), "", "missing", "add " + path(key) + " = [x, y, z] to the config");
+  return get_vec3(key, Vec3::Zero());
+}
+
+void Config::check_unknown_keys() const {
+  std::vector<std::string> unknown;
+  collect_unknown(s_->input, "", s_->known, unknown);
+  if (unknown.empty()) return;
+  std::vector<std::string> known;
+  for (const auto& k : s_->known) known.push_back(strip_indices(k));
+  const std::string& u = unknown.front();
+  const std::string hint = nearest(strip_indices(u), known);
+  const toml::node* n = s_->input.at_path(u).node();
+  throw InputError(u, n ? describe(*n) : "", "unknown key",
+                   hint.empty() ? "remove it" : "did you mean '" + hint + "'? (or remove it)");
+}
+
+std::string Config::resolved_toml() const {
+  std::ostringstream os;
+  os << s_->resolved << "\n";
+  return os.str();
+}
+
+}  // namespace lbdem

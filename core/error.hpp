@@ -1,0 +1,39 @@
+#pragma once
+// Input errors: one line naming the key, the value and the fix; the executables map them to exit 2.
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace lbdem {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string key, std::string value, std::string problem, std::string fix)
+      : std::runtime_error(format(key, value, problem, fix)), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }
+
+  static std::string format(const std::string& key, const std::string& value,
+                            const std::string& problem, const std::string& fix) {
+    std::string s = "'" + key + "'";
+    if (!value.empty()) s += " = " + value;
+    s += ": " + problem;
+    if (!fix.empty()) s += "; fix: " + fix;
+    return s;
+  }
+
+ private:
+  std::string key_;
+};
+
+/// Renders a number the way a user would type it in a TOML file.
+inline std::string to_text(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+/// Exit code for every input error (DESIGN §3).
+inline constexpr int kInputErrorExit = 2;
+
+}  // namespace lbdem
