@@ -1,6 +1,10 @@
 # Warnings and build flavours shared by every lbdem target (through the interface target lbdem_flags).
 add_library(lbdem_flags INTERFACE)
 target_compile_options(lbdem_flags INTERFACE -Wall -Wextra -Wpedantic)
+# GCC 12 reports a false -Wrestrict inside std::string concatenation (GCC bug 105651).
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+  target_compile_options(lbdem_flags INTERFACE -Wno-restrict)
+endif()
 if(LBDEM_WERROR)
   target_compile_options(lbdem_flags INTERFACE -Werror)
 endif()

@@ -62,11 +62,13 @@ toml::table* parent_table(toml::table& root, const std::vector<std::string>& par
 
 std::string describe(const toml::node& n) {
   std::ostringstream os;
-  if (auto* s = n.as_string()) {
-    os << '"' << s->get() << '"';
-  } else {
-    os << n;
-  }
+  n.visit([&](auto&& v) {
+    if constexpr (toml::is_string<decltype(v)>) {
+      os << '"' << v.get() << '"';
+    } else {
+      os << v;
+    }
+  });
   return os.str();
 }
 

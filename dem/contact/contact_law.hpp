@@ -1,0 +1,101 @@
+#pragma once
+// A contact law composed of small members (STYLE §2): a normal law (elastic + damping), the
+// tangential spring with Coulomb cap, a rolling model and a cohesion model. One templated loop is
+// instantiated per combination and chosen once per run with std::visit (dem/contact/registry.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "dem/contact/geometry.hpp"
+#include "dem/contact/hertz_mindlin.hpp"
+#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/rolling_resistance.hpp"
+#include "dem/contact/van_der_waals.hpp"
+
+namespace lbdem::dem {
+
+template <class NormalT, class RollingT, class CohesionT>
+struct ContactLaw {
+  using Normal = NormalT;
+  using Rolling = RollingT;
+  using Cohesion = CohesionT;
+
+  struct Params {
+    typename Normal::Params normal;
+    double friction;          // Coulomb mu [-]
+    bool tangential_damping;  // dashpot on the tangential spring
+    typename Rolling::Params rolling;
+    typename Cohesion::Params cohesion;
+  };
+
+  /// Distance beyond touch over which the law still acts [m].
+  static double range(const Params& p) {
+    if constexpr (Cohesion::active) return Cohesion::range(p.cohesion);
+    return 0.0;
+  }
+
+  /// Force on i from j (or a wall) for the geometry g; updates the history.
+  ///
+  /// Tangential spring (Cundall & Strack 1979; Luding 2008): xi is kept in the tangent plane by
+  /// projection with its length preserved, grows by v_t dt, gives F_t = -k_t xi - gamma_t v_t and is
+  /// capped at mu max(F_n, 0), F_n the normal contact force (elastic + damping, cohesion excluded).
+  /// While sliding the spring carries the whole capped force (xi = -F_t/k_t) and the energy this cut
+  /// removes from the spring is the sliding dissipation. When k_t changes with the overlap (Mindlin),
+  /// 0.5 (k_t,new - k_t,old) |xi|^2 enters the spring without work: it is booked as e_stiffness so
+  /// that the energy budget closes; at separation the spring's energy leaves the same way.
+  static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h, double dt) {
+    ContactForce out;
+    double f_coh = 0;
+    if constexpr (Cohesion::active) {
+      const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
+      f_coh = c.f;
+      out.u_elastic = c.u;
+    }
+    if (g.delta <= 0) {
+      out.e_stiffness = -0.5 * h.kt * h.xi.squaredNorm() - 0.5 * h.kr * h.theta.squaredNorm();
+      h = ContactHistory{};
+      out.force = f_coh * g.n;
+      return out;
+    }
+    const auto s = Normal::elastic(p.normal, g.delta, g.r_star);
+    const double vn = g.v_rel.dot(g.n);
+    const double gam = Normal::gamma(p.normal, s, g.m_star);
+    const double fn = s.f_el + gam * vn;
+    out.fn = fn;
+    out.u_elastic += s.u_el;
+    out.p_normal_damping = gam * vn * vn;
+
+    const Vec3 vt = g.v_rel - vn * g.n;
+    const double x2 = h.xi.squaredNorm();
+    if (x2 > 0) {
+      const Vec3 t = h.xi - h.xi.dot(g.n) * g.n;
+      const double t2 = t.squaredNorm();
+      h.xi = t2 > 0 ? Vec3(t * std::sqrt(x2 / t2)) : Vec3::Zero();
+    }
+    out.e_stiffness = 0.5 * (s.k_t - h.kt) * h.xi.squaredNorm();
+    h.kt = s.k_t;
+    h.xi += vt * dt;
+    const double gt = p.tangential_damping ? Normal::tangential_c(p.normal) * std::sqrt(g.m_star * s.k_t) : 0.0;
+    Vec3 ft = -s.k_t * h.xi - gt * vt;
+    const double cap = p.friction * std::max(fn, 0.0);
+    const double f2 = ft.squaredNorm();
+    if (f2 > cap * cap) {
+      const double u_before = 0.5 * s.k_t * h.xi.squaredNorm();
+      ft *= cap / std::sqrt(f2);
+      h.xi = -ft / s.k_t;
+      out.e_sliding = u_before - 0.5 * s.k_t * h.xi.squaredNorm();
+    } else {
+      out.p_tangential_damping = gt * vt.squaredNorm();
+    }
+    out.u_elastic += 0.5 * s.k_t * h.xi.squaredNorm();
+    out.ft = ft;
+
+    if constexpr (Rolling::active) {
+      const Vec3 wr = g.w_rel - g.w_rel.dot(g.n) * g.n;
+      Rolling::apply(p.rolling, g, wr, fn, s.k_n, dt, h, out);
+    }
+    out.force = (f_coh - fn) * g.n + ft;
+    return out;
+  }
+};
+
+}  // namespace lbdem::dem

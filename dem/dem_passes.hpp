@@ -1,0 +1,207 @@
+#pragma once
+// The two force passes of DemSolver::step, templated on the contact law (one instantiation per law
+// combination, chosen once per step by std::visit). Private to dem_solver.cpp.
+#include <cmath>
+#include <vector>
+
+#include "dem/dem_solver.hpp"
+
+namespace lbdem::dem {
+
+/// Books one evaluation into the contact's tally and state bits. Damping energy is integrated with
+/// the trapezoidal rule over the powers at consecutive steps (second order; the velocity-Verlet
+/// energy error is of the same order, DESIGN §5); sliding and rolling losses are the energy the cap
+/// removed from the springs in the step; stiffness-change energy is booked apart.
+inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, const ContactGeometry& g,
+                 double time, double dt) {
+  const std::uint8_t old = state;
+  const bool touch = g.delta > 0;
+  std::uint8_t st = 0;
+  if (touch) {
+    if (!(old & kTouching)) {
+      const double vn = g.v_rel.dot(g.n);
+      const double u = t.u_elastic;
+      t = ContactTally{};
+      t.u_elastic = u;
+      t.t_start = time;
+      t.vn_impact = vn;
+      t.vt_impact = (g.v_rel - vn * g.n).norm();
+      st |= kStarted;
+    }
+    t.e_normal_damping += 0.5 * dt * (t.p_normal_damping + c.p_normal_damping);
+    t.e_tangential_damping += 0.5 * dt * (t.p_tangential_damping + c.p_tangential_damping);
+    t.p_normal_damping = c.p_normal_damping;
+    t.p_tangential_damping = c.p_tangential_damping;
+    t.e_sliding += c.e_sliding;
+    t.e_rolling += c.e_rolling;
+    t.max_overlap = std::max(t.max_overlap, g.delta);
+    t.max_force = std::max(t.max_force, c.fn);
+    st |= kTouching | kInteracting;
+  } else if (old & kTouching) {
+    t.e_normal_damping += 0.5 * dt * t.p_normal_damping;
+    t.e_tangential_damping += 0.5 * dt * t.p_tangential_damping;
+    t.p_normal_damping = t.p_tangential_damping = 0;
+    st |= kEnded;
+  }
+  if (c.force.squaredNorm() > 0) st |= kInteracting;
+  t.e_stiffness += c.e_stiffness;
+  t.u_elastic = c.u_elastic;
+  state = st;
+}
+
+template <class Table>
+void run_pair_pass(const Table& tab, const ParticleArrays& p, const DemSettings& s, PairList& pl,
+                   double time) {
+  using Law = typename Table::law_type;
+  const double dt = s.dt, h = 0.5 * dt, range = tab.range;
+  const Domain& dom = s.domain;
+  const bool per = dom.any_periodic();
+  const std::size_t np = pl.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::uint32_t i = pl.i[k], j = pl.j[k];
+    Vec3 d = p.x[j] - p.x[i];
+    if (per) d = dom.min_image(d);
+    const double r2 = d.squaredNorm();
+    const double ri = p.radius[i], rj = p.radius[j], rs = ri + rj;
+    if (r2 >= (rs + range) * (rs + range) && !pl.state[k]) continue;
+    const double dist = std::sqrt(r2);
+    ContactGeometry g;
+    g.n = d / dist;
+    g.delta = rs - dist;
+    g.r_star = ri * rj / rs;
+    g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+    g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
+    // Velocities predicted to the end of the step (see dem_solver.hpp).
+    const Vec3 vi = p.v[i] + (h / p.mass[i]) * p.force[i], vj = p.v[j] + (h / p.mass[j]) * p.force[j];
+    const Vec3 wi = p.omega[i] + (h / p.inertia[i]) * p.torque[i];
+    const Vec3 wj = p.omega[j] + (h / p.inertia[j]) * p.torque[j];
+    const double half = 0.5 * std::max(g.delta, 0.0);
+    const double ai = ri - half, aj = rj - half;  // centre to contact point
+    g.v_rel = vi - vj + (ai * wi + aj * wj).cross(g.n);
+    g.w_rel = wi - wj;
+    const ContactForce c = Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
+    pl.force[k] = c.force;
+    const Vec3 tc = g.n.cross(c.ft);
+    pl.torque_i[k] = ai * tc + c.m_roll;
+    pl.torque_j[k] = aj * tc - c.m_roll;
+    book(pl.tally[k], pl.state[k], c, g, time, dt);
+  }
+}
+
+/// Contact of particle k with wall entry e, given where the wall is seen from the centre.
+template <class Law, class Params>
+void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, const Vec3& vk,
+                  const Vec3& wk, const Vec3& n, double dist, const Vec3& wall_velocity,
+                  const Vec3& origin, WallContactList& wc, std::size_t e, double time, double dt,
+                  Vec3& f, Vec3& tq) {
+  ContactGeometry g;
+  g.n = n;
+  g.delta = p.radius[k] - dist;
+  g.r_star = p.radius[k];
+  g.m_star = p.mass[k];
+  g.i_star = p.inertia[k];
+  const double a = p.radius[k] - std::max(g.delta, 0.0);
+  g.v_rel = vk + a * wk.cross(n) - wall_velocity;
+  g.w_rel = wk;
+  const ContactForce c = Law::evaluate(prm, g, wc.history[e], dt);
+  const Vec3 point = p.x[k] + a * n;
+  f += c.force;
+  tq += a * n.cross(c.ft) + c.m_roll;
+  wc.force[e] = c.force;
+  wc.contact_point[e] = point;
+  // The rolling torque's reaction on the wall is included; its work on a rotating wall is not
+  // (it needs the wall's spin, and mu_r is small).
+  wc.wall_torque[e] = (point - origin).cross(-c.force) - c.m_roll;
+  wc.power[e] = c.force.dot(wall_velocity);
+  book(wc.tally[e], wc.state[e], c, g, time, dt);
+}
+
+template <class Table>
+void run_particle_pass(const Table& tab, ParticleArrays& p, const DemSettings& s,
+                       const std::vector<Wall>& walls, const PairList& pl, WallContactList& wc,
+                       double time) {
+  using Law = typename Table::law_type;
+  const double dt = s.dt, h = 0.5 * dt, range = tab.range;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 vk = p.v[k] + (h / p.mass[k]) * p.force[k];
+    const Vec3 wk = p.omega[k] + (h / p.inertia[k]) * p.torque[k];
+    Vec3 f = p.mass[k] * s.gravity;
+    Vec3 tq = Vec3::Zero();
+    // Walls first, in entry order (sorted by wall, then triangle).
+    for (std::size_t e = wc.first[k]; e < wc.first[k + 1];) {
+      const Wall& w = walls[wc.wall[e]];
+      const auto& prm = tab.wall(p.material[k], w.material);
+      if (const auto* mesh = std::get_if<MeshWall>(&w.shape)) {
+        std::size_t e1 = e;
+        while (e1 < wc.first[k + 1] && wc.wall[e1] == wc.wall[e]) ++e1;
+        thread_local std::vector<MeshHit> hits;
+        thread_local std::vector<std::size_t> hit_entry;
+        thread_local std::vector<char> keep, kept_entry;
+        hits.clear(), hit_entry.clear();
+        const double reach = p.radius[k] + range;
+        for (std::size_t q = e; q < e1; ++q) {
+          const MeshClosest c = mesh->closest(wc.tri[q], p.x[k]);
+          if (c.dist2 < reach * reach && c.dist2 > 0) hits.push_back({wc.tri[q], c}), hit_entry.push_back(q);
+        }
+        select_mesh_contacts(mesh->mesh, hits, keep);
+        kept_entry.assign(e1 - e, 0);
+        for (std::size_t m = 0; m < hits.size(); ++m)
+          if (keep[m]) kept_entry[hit_entry[m] - e] = 1;
+        // A contact that moves onto a neighbouring triangle keeps its history (flat meshes behave
+        // like the analytic plane): a new kept entry inherits from a vanished one of this mesh.
+        for (std::size_t q = e; q < e1; ++q) {
+          if (!kept_entry[q - e] || wc.state[q]) continue;
+          for (std::size_t r = e; r < e1; ++r)
+            if (!kept_entry[r - e] && (wc.state[r] & kInteracting)) {
+              wc.history[q] = wc.history[r], wc.tally[q] = wc.tally[r], wc.state[q] = wc.state[r];
+              wc.history[r] = ContactHistory{}, wc.tally[r] = ContactTally{}, wc.state[r] = 0;
+              break;
+            }
+        }
+        for (std::size_t m = 0; m < hits.size(); ++m) {
+          if (!keep[m]) continue;
+          const std::size_t q = hit_entry[m];
+          const Vec3 d = hits[m].closest.point - p.x[k];
+          const double dist = std::sqrt(hits[m].closest.dist2);
+          wall_contact<Law>(prm, p, k, vk, wk, d / dist, dist,
+                            mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin, wc,
+                            q, time, dt, f, tq);
+        }
+        for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
+          if (!kept_entry[q - e] && wc.state[q])
+            wall_contact<Law>(prm, p, k, vk, wk, Vec3::UnitZ(), 1e300, Vec3::Zero(), w.torque_origin,
+                              wc, q, time, dt, f, tq);
+        e = e1;
+      } else {
+        const WallPoint wp = std::visit(
+            [&](const auto& shape) -> WallPoint {
+              if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshWall>) {
+                return {};
+              } else {
+                return wall_point(shape, p.x[k], time);
+              }
+            },
+            w.shape);
+        if (p.radius[k] - wp.dist > -range || wc.state[e])
+          wall_contact<Law>(prm, p, k, vk, wk, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
+                            w.torque_origin, wc, e, time, dt, f, tq);
+        ++e;
+      }
+    }
+    for (std::uint32_t q = pl.first[k]; q < pl.first[k + 1]; ++q)
+      if (pl.state[q] & kInteracting) f += pl.force[q], tq += pl.torque_i[q];
+    for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r) {
+      const std::uint32_t q = pl.jpair[r];
+      if (pl.state[q] & kInteracting) f -= pl.force[q], tq += pl.torque_j[q];
+    }
+    p.force[k] = f;
+    p.torque[k] = tq;
+    p.v[k] += (h / p.mass[k]) * f;
+    p.omega[k] += (h / p.inertia[k]) * tq;
+  }
+}
+
+}  // namespace lbdem::dem

@@ -1,0 +1,176 @@
+// Neighbour rebuild of DemSolver: periodic wrap, removals, spatial sort, new pair and wall lists with
+// the contact history carried over.
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "core/error.hpp"
+#include "dem/dem_solver.hpp"
+
+namespace lbdem::dem {
+
+namespace {
+constexpr auto kGone = std::numeric_limits<std::uint32_t>::max();
+
+bool outside(const Domain& d, const Vec3& x, double margin) {
+  for (int a = 0; a < 3; ++a)
+    if (!d.periodic[a] && (x[a] < d.lo[a] - margin || x[a] > d.hi[a] + margin)) return true;
+  return false;
+}
+}  // namespace
+
+void DemSolver::rebuild() {
+  ++rebuilds_;
+  const Domain& dom = s_.domain;
+  const double extra = interaction_range() + s_.skin;
+  const double cell = 2 * max_radius_ + extra;
+  for (int a = 0; a < 3; ++a)
+    if (dom.periodic[a] && dom.length()[a] < 2 * cell)
+      throw InputError("domain", "periodic length " + to_text(dom.length()[a]) + " m",
+                       "shorter than two interaction cut-offs (" + to_text(2 * cell) + " m)",
+                       "make the periodic box longer or the particles smaller");
+  const std::size_t n = p_.size();
+  if (dom.any_periodic())
+    for (auto& x : p_.x) x = dom.wrap(x);
+
+  // Removals: flagged (outlet) or lost through a non-periodic face.
+  remove_flag_.resize(n, 0);
+  const double margin = s_.lost_margin > 0 ? s_.lost_margin : cell;
+  std::vector<std::uint8_t> gone(n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool lost = outside(dom, p_.x[k], margin);
+    if (!remove_flag_[k] && !lost) continue;
+    gone[k] = 1;
+    lost_ += lost && !remove_flag_[k];
+    mass_removed_ += p_.mass[k];
+    removed_ += 0.5 * p_.mass[k] * p_.v[k].squaredNorm() + 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm() -
+                p_.mass[k] * s_.gravity.dot(p_.x[k]);
+  }
+  remove_flag_.clear();
+
+  const CellGrid grid(dom, cell);
+  std::vector<std::uint32_t> order;
+  if (s_.sort_every > 0 && (rebuilds_ - 1) % s_.sort_every == 0) {
+    order = spatial_order(p_.x, grid);
+  } else {
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0u);
+  }
+  order.erase(std::remove_if(order.begin(), order.end(), [&](std::uint32_t k) { return gone[k]; }),
+              order.end());
+  std::vector<std::uint32_t> inv(n, kGone);
+  for (std::size_t k = 0; k < order.size(); ++k) inv[order[k]] = static_cast<std::uint32_t>(k);
+
+  p_.permute(order);
+  PairList old_pairs = std::move(pairs_);
+  WallContactList old_wc = std::move(wc_);
+  pairs_ = PairList{};
+  wc_ = WallContactList{};
+
+  CellList cells;
+  cells.build(p_.x, grid);
+  build_pairs(p_.x, p_.radius, dom, cells, extra, pairs_);
+  std::vector<ContactTally> dropped;
+  carry_over(old_pairs, inv, pairs_, dropped);
+  build_wall_list(cells, extra);
+
+  // Wall contacts carry over by (particle, wall, triangle).
+  for (std::size_t e = 0; e < old_wc.size(); ++e) {
+    if (!old_wc.state[e]) continue;
+    const std::uint32_t q = inv[old_wc.particle[e]];
+    bool found = false;
+    if (q != kGone)
+      for (std::size_t f = wc_.first[q]; f < wc_.first[q + 1]; ++f)
+        if (wc_.wall[f] == old_wc.wall[e] && wc_.tri[f] == old_wc.tri[e]) {
+          wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e], wc_.state[f] = old_wc.state[e];
+          found = true;
+          break;
+        }
+    if (!found) dropped.push_back(old_wc.tally[e]);
+  }
+  for (const auto& t : dropped) {
+    stats_.add_closed(t);
+    stiffness_closed_ += t.e_stiffness;
+  }
+
+  x_ref_ = p_.x;
+  wall_ref_.assign(walls_.size(), {});
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape)) wall_ref_[w] = m->current;
+  need_rebuild_ = false;
+}
+
+void DemSolver::build_wall_list(const CellList& cells, double extra) {
+  const std::size_t n = p_.size();
+  const CellGrid& g = cells.grid;
+  // Triangles of each mesh binned into the cells their inflated bounding box overlaps: a triangle
+  // within reach of a centre overlaps the centre's cell.
+  const double inflate = max_radius_ + extra;
+  std::vector<std::vector<std::uint32_t>> bin_start(walls_.size()), bin_tris(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const auto* m = std::get_if<MeshWall>(&walls_[w].shape);
+    if (!m) continue;
+    std::vector<std::uint32_t> count(g.cells() + 1, 0);
+    const auto for_cells = [&](std::size_t t, auto&& f) {
+      const auto& tri = m->mesh.triangles[t];
+      Vec3 lo = m->current[tri[0]], hi = lo;
+      for (int c = 1; c < 3; ++c) lo = lo.cwiseMin(m->current[tri[c]]), hi = hi.cwiseMax(m->current[tri[c]]);
+      lo.array() -= inflate, hi.array() += inflate;
+      for (int z = g.coord(lo[2], 2); z <= g.coord(hi[2], 2); ++z)
+        for (int y = g.coord(lo[1], 1); y <= g.coord(hi[1], 1); ++y)
+          for (int x = g.coord(lo[0], 0); x <= g.coord(hi[0], 0); ++x) f(g.index(x, y, z));
+    };
+    for (std::size_t t = 0; t < m->mesh.size(); ++t) for_cells(t, [&](std::size_t c) { ++count[c + 1]; });
+    for (std::size_t c = 0; c < g.cells(); ++c) count[c + 1] += count[c];
+    bin_tris[w].resize(count.back());
+    std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
+    for (std::size_t t = 0; t < m->mesh.size(); ++t)
+      for_cells(t, [&](std::size_t c) { bin_tris[w][fill[c]++] = static_cast<std::uint32_t>(t); });
+    bin_start[w] = std::move(count);
+  }
+
+  const auto visit = [&](std::size_t k, auto&& add) {
+    const Vec3& x = p_.x[k];
+    const double reach = p_.radius[k] + extra;
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape)) {
+        const std::size_t c = g.cell_of(x);
+        for (std::uint32_t b = bin_start[w][c]; b < bin_start[w][c + 1]; ++b) {
+          const int t = static_cast<int>(bin_tris[w][b]);
+          if (m->closest(t, x).dist2 < reach * reach) add(w, t);
+        }
+      } else {
+        const WallPoint wp = std::visit(
+            [&](const auto& shape) -> WallPoint {
+              if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshWall>) {
+                return {};
+              } else {
+                return wall_point(shape, x, t_);
+              }
+            },
+            walls_[w].shape);
+        if (wp.dist < reach) add(w, -1);
+      }
+    }
+  };
+  wc_.first.assign(n + 1, 0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t k = 0; k < n; ++k) {
+    std::uint32_t c = 0;
+    visit(k, [&](std::size_t, int) { ++c; });
+    wc_.first[k + 1] = c;
+  }
+  for (std::size_t k = 0; k < n; ++k) wc_.first[k + 1] += wc_.first[k];
+  wc_.resize(wc_.first[n]);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t k = 0; k < n; ++k) {
+    std::uint32_t e = wc_.first[k];
+    visit(k, [&](std::size_t w, int t) {
+      wc_.particle[e] = static_cast<std::uint32_t>(k);
+      wc_.wall[e] = static_cast<std::uint16_t>(w);
+      wc_.tri[e++] = t;
+    });
+  }
+}
+
+}  // namespace lbdem::dem

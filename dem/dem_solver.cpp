@@ -1,0 +1,209 @@
+#include "dem/dem_solver.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "core/deterministic_sum.hpp"
+#include "core/error.hpp"
+#include "dem/dem_passes.hpp"
+
+namespace lbdem::dem {
+
+DemSolver::DemSolver(const DemSettings& s, std::vector<Material> materials)
+    : s_(s), materials_(std::move(materials)), law_(make_law_table(s.contact, materials_)) {
+  if (materials_.empty())
+    throw InputError("materials", "[]", "no material defined", "add a [[materials]] table");
+  stats_.setup(s_.collisions, s_.domain);
+}
+
+double DemSolver::interaction_range() const {
+  return std::visit([](const auto& t) { return t.range; }, law_);
+}
+
+void DemSolver::add_particle(const Vec3& x, const Vec3& v, double radius, int material) {
+  const Material& m = materials_.at(material);
+  p_.add(x, v, Vec3::Zero(), radius, m.density, material, next_id_++);
+  const std::size_t k = p_.size() - 1;
+  p_.force[k] = p_.mass[k] * s_.gravity;
+  max_radius_ = std::max(max_radius_, radius);
+  if (step_ > 0 || t_ > 0)
+    inserted_ += 0.5 * p_.mass[k] * v.squaredNorm() - p_.mass[k] * s_.gravity.dot(x);
+  need_rebuild_ = true;
+}
+
+void DemSolver::remove_particles(const std::vector<std::uint32_t>& idx) {
+  remove_flag_.resize(p_.size(), 0);
+  for (auto k : idx) remove_flag_[k] = 1;
+  need_rebuild_ = true;
+}
+
+int DemSolver::add_wall(Wall w) {
+  if (w.material < 0 || w.material >= static_cast<int>(materials_.size()))
+    throw InputError("walls." + w.name + ".material", std::to_string(w.material), "no such material",
+                     "name one of the [[materials]]");
+  walls_.push_back(std::move(w));
+  if (auto* m = std::get_if<MeshWall>(&walls_.back().shape)) m->update(t_);
+  need_rebuild_ = true;
+  return static_cast<int>(walls_.size()) - 1;
+}
+
+void DemSolver::update_walls() {
+  for (auto& w : walls_)
+    if (auto* m = std::get_if<MeshWall>(&w.shape); m && m->motion.moving()) m->update(t_);
+}
+
+double DemSolver::wall_displacement() const {
+  double d2 = 0;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape); m && m->motion.moving()) {
+      for (std::size_t k = 0; k < m->current.size(); ++k)
+        d2 = std::max(d2, (m->current[k] - wall_ref_[w][k]).squaredNorm());
+    }
+  }
+  return std::sqrt(d2);
+}
+
+void DemSolver::step() {
+  const double dt = s_.dt, h = 0.5 * dt;
+  const std::size_t n = p_.size();
+  double max_d2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_d2)
+  for (std::size_t k = 0; k < n; ++k) {
+    p_.v[k] += (h / p_.mass[k]) * p_.force[k];
+    p_.omega[k] += (h / p_.inertia[k]) * p_.torque[k];
+    p_.x[k] += dt * p_.v[k];
+    if (k < x_ref_.size()) max_d2 = std::max(max_d2, (p_.x[k] - x_ref_[k]).squaredNorm());
+  }
+  t_ = static_cast<double>(step_ + 1) * dt;  // from the step count: no drift over 1e8 steps
+  ++step_;
+  update_walls();
+  const double max_d = std::sqrt(max_d2);
+  if (need_rebuild_ || 2 * max_d > s_.skin || max_d + wall_displacement() > s_.skin) rebuild();
+  std::visit(
+      [&](const auto& table) {
+        pair_pass(table);
+        particle_pass(table);
+      },
+      law_);
+  event_scan();
+  sum_wall_loads();
+}
+
+template <class Table>
+void DemSolver::pair_pass(const Table& t) {
+  run_pair_pass(t, p_, s_, pairs_, t_);
+}
+
+template <class Table>
+void DemSolver::particle_pass(const Table& t) {
+  run_particle_pass(t, p_, s_, walls_, pairs_, wc_, t_);
+}
+
+void DemSolver::event_scan() {
+  const auto scan = [&](std::vector<std::uint8_t>& state, std::vector<ContactTally>& tally, bool wall,
+                        auto&& ids, auto&& where) {
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      const std::uint8_t st = state[k];
+      if (!(st & (kStarted | kEnded))) continue;
+      if (st & kStarted) stats_.on_start(wall, tally[k].vn_impact, tally[k].vt_impact);
+      if (st & kEnded) {
+        const auto [a, b] = ids(k);
+        stats_.on_end(wall, tally[k], t_, a, b, where(k));
+        stiffness_closed_ += tally[k].e_stiffness;
+        const double u = tally[k].u_elastic;
+        tally[k] = ContactTally{};
+        tally[k].u_elastic = u;  // cohesion may still hold energy after the touch ends
+      }
+      state[k] = st & (kInteracting | kTouching);
+    }
+  };
+  scan(pairs_.state, pairs_.tally, false,
+       [&](std::size_t k) { return std::pair{p_.id[pairs_.i[k]], p_.id[pairs_.j[k]]}; },
+       [&](std::size_t k) { return Vec3(0.5 * (p_.x[pairs_.i[k]] + p_.x[pairs_.j[k]])); });
+  scan(wc_.state, wc_.tally, true,
+       [&](std::size_t k) { return std::pair{p_.id[wc_.particle[k]], std::int64_t(-1 - wc_.wall[k])}; },
+       [&](std::size_t k) { return wc_.contact_point[k]; });
+}
+
+void DemSolver::sum_wall_loads() {
+  const std::size_t nw = walls_.size();
+  if (nw == 0) return;
+  struct Loads {
+    std::vector<double> v;  // per wall: F(3), T(3); then total power
+    Loads& operator+=(const Loads& o) {
+      if (v.empty()) v.assign(o.v.size(), 0.0);
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] += o.v[k];
+      return *this;
+    }
+  };
+  Loads zero{std::vector<double>(6 * nw + 1, 0.0)};
+  // One block-partial per 4096 entries: the element-wise Loads sum is fixed-order.
+  const std::size_t ne = wc_.size();
+  const std::size_t nb = (ne + kSumBlock - 1) / kSumBlock;
+  std::vector<Loads> part(nb, zero);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    auto& v = part[b].v;
+    for (std::size_t k = b * kSumBlock; k < std::min(ne, (b + 1) * kSumBlock); ++k) {
+      if (!(wc_.state[k] & kInteracting)) continue;
+      const std::size_t w = wc_.wall[k];
+      for (int a = 0; a < 3; ++a) v[6 * w + a] -= wc_.force[k][a], v[6 * w + 3 + a] += wc_.wall_torque[k][a];
+      v[6 * nw] += wc_.power[k];
+    }
+  }
+  Loads tot = zero;
+  for (const auto& p : part) tot += p;
+  for (std::size_t w = 0; w < nw; ++w) {
+    walls_[w].force = Vec3(tot.v[6 * w], tot.v[6 * w + 1], tot.v[6 * w + 2]);
+    walls_[w].torque = Vec3(tot.v[6 * w + 3], tot.v[6 * w + 4], tot.v[6 * w + 5]);
+  }
+  const double power = tot.v[6 * nw];
+  wall_work_ += 0.5 * s_.dt * (wall_power_prev_ + power);  // trapezoidal rule
+  wall_power_prev_ = power;
+}
+
+std::size_t DemSolver::contacts_pp() const {
+  return static_cast<std::size_t>(
+      std::count_if(pairs_.state.begin(), pairs_.state.end(), [](auto s) { return s & kTouching; }));
+}
+std::size_t DemSolver::contacts_pw() const {
+  return static_cast<std::size_t>(
+      std::count_if(wc_.state.begin(), wc_.state.end(), [](auto s) { return s & kTouching; }));
+}
+
+EnergyTotals DemSolver::energy() const {
+  EnergyTotals e;
+  const std::size_t n = p_.size();
+  e.kinetic_translational =
+      deterministic_sum(n, [&](std::size_t k) { return 0.5 * p_.mass[k] * p_.v[k].squaredNorm(); }, 0.0);
+  e.kinetic_rotational =
+      deterministic_sum(n, [&](std::size_t k) { return 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm(); }, 0.0);
+  e.potential = deterministic_sum(n, [&](std::size_t k) { return -p_.mass[k] * s_.gravity.dot(p_.x[k]); }, 0.0);
+  using Acc = Eigen::Matrix<double, 6, 1>;  // elastic, nd, td, sliding, rolling, stiffness
+  const auto tally_sum = [](const std::vector<ContactTally>& t) {
+    return deterministic_sum(
+        t.size(),
+        [&](std::size_t k) {
+          const auto& c = t[k];
+          Acc a;
+          a << c.u_elastic, c.e_normal_damping, c.e_tangential_damping, c.e_sliding, c.e_rolling, c.e_stiffness;
+          return a;
+        },
+        Acc(Acc::Zero()));
+  };
+  const Acc a = tally_sum(pairs_.tally) + tally_sum(wc_.tally);
+  const double* closed = stats_.closed_energy();
+  e.elastic = a[0];
+  e.normal_damping = closed[0] + a[1];
+  e.tangential_damping = closed[1] + a[2];
+  e.sliding = closed[2] + a[3];
+  e.rolling = closed[3] + a[4];
+  e.stiffness_change = stiffness_closed_ + a[5];
+  e.wall_work = wall_work_;
+  e.inserted = inserted_;
+  e.removed = removed_;
+  return e;
+}
+
+}  // namespace lbdem::dem

@@ -1,0 +1,70 @@
+#pragma once
+// Half neighbour list of particle pairs (i < j) within the cut-off plus skin, sorted by (i, j), with
+// each pair's contact history and accounting, and the two CSR views the deterministic gather needs:
+// pairs where p is i (a contiguous range) and pairs where p is j (a transposed index).
+#include <cstdint>
+#include <vector>
+
+#include "dem/contact/geometry.hpp"
+#include "dem/domain.hpp"
+
+namespace lbdem::dem {
+
+/// Accounting of the contact a pair is in now: energies dissipated since it began [J], the powers of
+/// the last step [W] (trapezoidal integration) and the impact record.
+struct ContactTally {
+  double e_normal_damping = 0, e_tangential_damping = 0, e_sliding = 0, e_rolling = 0;
+  double p_normal_damping = 0, p_tangential_damping = 0;
+  double t_start = 0;      // [s]
+  double vn_impact = 0;    // normal approach speed at first touch [m/s]
+  double vt_impact = 0;    // tangential speed at first touch [m/s]
+  double max_overlap = 0;  // [m]
+  double max_force = 0;    // largest normal contact force [N]
+  double e_stiffness = 0;  // spring energy entered by stiffness change (see contact_law.hpp) [J]
+  double u_elastic = 0;    // energy stored in the contact now [J]
+
+  double dissipated() const { return e_normal_damping + e_tangential_damping + e_sliding + e_rolling; }
+};
+
+/// State bits of a pair or wall contact after an evaluation. kStarted/kEnded mark the step in which a
+/// touch began or ended; the serial event scan consumes and clears them.
+enum PairState : std::uint8_t { kInteracting = 1, kTouching = 2, kStarted = 4, kEnded = 8 };
+
+struct PairList {
+  std::vector<std::uint32_t> i, j;
+  std::vector<ContactHistory> history;
+  std::vector<ContactTally> tally;
+  std::vector<std::uint8_t> state;  // PairState bits of the last evaluation
+  std::vector<Vec3> force;          // on i [N] (j gets -force), valid if kInteracting
+  std::vector<Vec3> torque_i, torque_j;
+  std::vector<std::uint32_t> first;          // pairs with i == p: [first[p], first[p+1])
+  std::vector<std::uint32_t> jfirst, jpair;  // pairs with j == p: jpair[jfirst[p] .. jfirst[p+1])
+
+  std::size_t size() const { return i.size(); }
+  void resize(std::size_t n);
+  /// Builds jfirst/jpair from (i, j) for n_particles particles (stable: ascending pair index).
+  void build_transpose(std::size_t n_particles);
+};
+
+/// Particle indices sorted into cells (counting sort, stable in particle index).
+struct CellList {
+  CellGrid grid;
+  std::vector<std::uint32_t> start;  // cells + 1
+  std::vector<std::uint32_t> items;
+  void build(const std::vector<Vec3>& x, const CellGrid& g);
+};
+
+/// Order of particles by cell (stable): new[k] = old[order[k]]. Improves cache locality.
+std::vector<std::uint32_t> spatial_order(const std::vector<Vec3>& x, const CellGrid& g);
+
+/// Rebuilds the (i, j) list: pairs with |x_j - x_i| < r_i + r_j + extra. History arrays are reset.
+void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const Domain& d,
+                 const CellList& cells, double extra, PairList& out);
+
+/// Moves the state of pairs in contact from `old` into `fresh`. `inv` maps an old particle index to
+/// its new index (UINT32_MAX if removed). Pairs whose contact cannot be carried (a partner removed)
+/// hand their tally to `dropped`.
+void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh,
+                std::vector<ContactTally>& dropped);
+
+}  // namespace lbdem::dem

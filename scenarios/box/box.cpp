@@ -1,0 +1,235 @@
+#include "scenarios/box/box.hpp"
+
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/h5.hpp"
+
+namespace lbdem::scenarios {
+
+namespace {
+
+const char* kAxes[3] = {"x", "y", "z"};
+
+bool inside(const Vec3& x, double r, const Vec3& lo, const Vec3& hi) {
+  for (int a = 0; a < 3; ++a)
+    if (x[a] - r < lo[a] - 1e-12 || x[a] + r > hi[a] + 1e-12) return false;
+  return true;
+}
+
+std::string vec_text(const Vec3& v) {
+  return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
+}
+
+}  // namespace
+
+BoxScenario::BoxScenario(const Config& cfg) {
+  const Config run = cfg.section("run");
+  const Config box = cfg.section("box");
+  dem::DemSettings s;
+  s.domain.lo = box.require_vec3("lo");
+  s.domain.hi = box.require_vec3("hi");
+  for (int a = 0; a < 3; ++a)
+    if (!(s.domain.hi[a] > s.domain.lo[a]))
+      throw InputError(box.path("hi"), vec_text(s.domain.hi), "not above box.lo along " + std::string(kAxes[a]),
+                       "give hi > lo on every axis");
+  const auto mats = read_materials(cfg);
+  const std::string wall_mat_name = box.get_string("wall_material", mats.front().name);
+  const int wall_mat = material_index(mats, wall_mat_name, box.path("wall_material"));
+  std::vector<dem::Wall> walls;
+  for (int a = 0; a < 3; ++a) {
+    const std::string lo_key = std::string(kAxes[a]) + "_lo", hi_key = std::string(kAxes[a]) + "_hi";
+    const std::string lo = box.get_choice(lo_key, "wall", {"wall", "periodic", "open"});
+    const std::string hi = box.get_choice(hi_key, a == 2 ? "open" : "wall", {"wall", "periodic", "open"});
+    if ((lo == "periodic") != (hi == "periodic"))
+      throw InputError(box.path(lo == "periodic" ? hi_key : lo_key), "\"" + (lo == "periodic" ? hi : lo) + "\"",
+                       "periodic faces come in pairs", "make both " + lo_key + " and " + hi_key + " periodic");
+    s.domain.periodic[a] = lo == "periodic";
+    for (int side = 0; side < 2; ++side) {
+      if ((side ? hi : lo) != "wall") continue;
+      dem::PlaneWall p;
+      p.point = side ? s.domain.hi : s.domain.lo;
+      p.normal = Vec3::Zero();
+      p.normal[a] = side ? -1 : 1;
+      dem::Wall w;
+      w.name = side ? hi_key : lo_key;
+      w.material = wall_mat;
+      w.shape = p;
+      w.torque_origin = p.point;
+      walls.push_back(w);
+    }
+  }
+  for (const Config& w : cfg.table_array("walls")) walls.push_back(read_wall(w, mats));
+  s.gravity = cfg.section("physics").get_vec3("gravity", Vec3(0, 0, -9.81));
+  s.contact = read_contact(cfg.section("contact"));
+  s.collisions = read_collisions(cfg.section("output").section("collisions"));
+
+  // Particles: explicit list, then random fills, all inside the box.
+  rng_.seed(static_cast<std::uint64_t>(run.get_int("seed", 1, Range::non_negative())));
+  struct Init {
+    Vec3 x, v, w;
+    double r;
+    int mat;
+  };
+  std::vector<Init> init;
+  std::vector<dem::Placed> placed;
+  const auto parts = cfg.table_array("particle");
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const Config& p = parts[k];
+    Init q{p.require_vec3("position"), p.get_vec3("velocity", Vec3::Zero()),
+           p.get_vec3("angular_velocity", Vec3::Zero()),
+           p.require("radius", Range::positive("give the particle radius in m")),
+           material_index(mats, p.get_string("material", mats.front().name), p.path("material"))};
+    if (!inside(q.x, 0, s.domain.lo, s.domain.hi))
+      throw InputError(p.path("position"), vec_text(q.x), "outside the box " + vec_text(s.domain.lo) + " - " +
+                       vec_text(s.domain.hi), "move the particle into the box or enlarge box.lo/box.hi");
+    init.push_back(q);
+    placed.push_back({q.x, q.r});
+  }
+  for (const Config& f : cfg.table_array("fill")) {
+    dem::FillRequest req;
+    req.lo = f.get_vec3("lo", s.domain.lo);
+    req.hi = f.get_vec3("hi", s.domain.hi);
+    if (!inside(req.lo, 0, s.domain.lo, s.domain.hi) || !inside(req.hi, 0, s.domain.lo, s.domain.hi))
+      throw InputError(f.path("lo"), vec_text(req.lo) + " - " + vec_text(req.hi), "fill region outside the box",
+                       "keep the fill region inside box.lo - box.hi");
+    req.count = f.get_int("count", 0, Range::non_negative());
+    req.mass = f.get("mass", 0.0, Range::non_negative());
+    if ((req.count > 0) == (req.mass > 0))
+      throw InputError(f.path("count"), std::to_string(req.count), "give exactly one of count and mass",
+                       "set count = N or mass = M [kg]");
+    const int mat = material_index(mats, f.get_string("material", mats.front().name), f.path("material"));
+    req.density = mats[mat].density;
+    req.radius = read_radius(f.section("radius"));
+    const Vec3 v = f.get_vec3("velocity", Vec3::Zero());
+    const auto got = dem::random_fill(req, placed, rng_);
+    const bool short_count = req.count > 0 && static_cast<std::int64_t>(got.size()) < req.count;
+    double m = 0;
+    for (const auto& g : got) m += mats[mat].density * 4.0 / 3.0 * kPi * g.r * g.r * g.r;
+    if (short_count || (req.mass > 0 && m < req.mass))
+      throw InputError(f.path(req.count > 0 ? "count" : "mass"),
+                       req.count > 0 ? std::to_string(req.count) : to_text(req.mass),
+                       "only " + std::to_string(got.size()) + " particles fit in the fill region without overlap",
+                       "enlarge the fill region or ask for fewer particles");
+    for (const auto& g : got) init.push_back({g.x, v, Vec3::Zero(), g.r, mat}), placed.push_back(g);
+  }
+
+  const Config inflow = cfg.section("inflow");
+  inflow_.on = inflow.get_bool("enabled", false);
+  double r_min = 1e300, r_max = 0;
+  for (const auto& q : init) r_min = std::min(r_min, q.r), r_max = std::max(r_max, q.r);
+  if (inflow_.on) {
+    inflow_.lo = inflow.require_vec3("lo");
+    inflow_.hi = inflow.require_vec3("hi");
+    inflow_.mass_rate = inflow.require("mass_rate", Range::positive("give the inflow mass rate in kg/s"));
+    inflow_.start = inflow.get("start", 0.0, Range::non_negative());
+    inflow_.end = inflow.get("end", 1e300, Range::non_negative());
+    inflow_.period = inflow.get("insert_interval", 1e-3, Range::positive("give the insertion interval in s"));
+    inflow_.material = material_index(mats, inflow.get_string("material", mats.front().name), inflow.path("material"));
+    inflow_.velocity = inflow.get_vec3("velocity", Vec3::Zero());
+    inflow_.radius = read_radius(inflow.section("radius"));
+    r_min = std::min(r_min, inflow_.radius.smallest());
+    r_max = std::max(r_max, inflow_.radius.largest());
+  }
+  const Config outlet = cfg.section("outlet");
+  outlet_.on = outlet.get_bool("enabled", false);
+  if (outlet_.on) {
+    outlet_.lo = outlet.require_vec3("lo");
+    outlet_.hi = outlet.require_vec3("hi");
+  }
+  if (init.empty() && !inflow_.on)
+    throw InputError("fill", "", "no particles", "add a [[fill]] or [[particle]] table or an [inflow]");
+
+  const Config dcfg = cfg.section("dem");
+  std::vector<int> wall_mats;
+  for (const auto& w : walls) wall_mats.push_back(w.material);
+  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min);
+  s.dt = step_.dt;
+  s.skin = dcfg.get("skin", 0.2 * r_min, Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
+  s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
+  out_ = OutputSettings::from(run, cfg.section("output"));
+  (void)r_max;
+
+  solver_ = std::make_unique<dem::DemSolver>(s, mats);
+  for (auto& w : walls) {
+    wall_columns_.push_back("wall_" + w.name + "_force_z_N");
+    wall_columns_.push_back("wall_" + w.name + "_torque_axis_Nm");
+    solver_->add_wall(std::move(w));
+  }
+  for (const auto& q : init) {
+    solver_->add_particle(q.x, q.v, q.r, q.mat);
+    solver_->particles().omega.back() = q.w;
+  }
+}
+
+void BoxScenario::banner(Log& log) const {
+  dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time, step_.scales.rayleigh_time,
+             step_.scales.where);
+}
+
+void BoxScenario::before_step(dem::DemSolver& s) {
+  const double t = s.time();
+  if (inflow_.on && t >= inflow_.start && t <= inflow_.end) {
+    const std::int64_t every = std::max<std::int64_t>(1, std::llround(inflow_.period / s.settings().dt));
+    if (s.steps() % every == 0) {
+      const double target = inflow_.mass_rate * (std::min(t, inflow_.end) - inflow_.start);
+      if (target > inflow_.inserted) {
+        dem::FillRequest req;
+        req.lo = inflow_.lo, req.hi = inflow_.hi;
+        req.mass = target - inflow_.inserted;
+        req.density = s.materials()[inflow_.material].density;
+        req.radius = inflow_.radius;
+        std::vector<dem::Placed> existing;
+        const auto& p = s.particles();
+        const double m = 2 * inflow_.radius.largest();
+        for (std::size_t k = 0; k < p.size(); ++k)
+          if (inside(p.x[k], -m, inflow_.lo, inflow_.hi)) existing.push_back({p.x[k], p.radius[k]});
+        for (const auto& g : dem::random_fill(req, existing, rng_)) {
+          s.add_particle(g.x, inflow_.velocity, g.r, inflow_.material);
+          inflow_.inserted += s.particles().mass.back();
+        }
+      }
+    }
+  }
+  if (outlet_.on && s.steps() % outlet_.every == 0) {
+    std::vector<std::uint32_t> out;
+    const auto& p = s.particles();
+    for (std::size_t k = 0; k < p.size(); ++k)
+      if (inside(p.x[k], 0, outlet_.lo, outlet_.hi)) out.push_back(static_cast<std::uint32_t>(k));
+    if (!out.empty()) s.remove_particles(out);
+  }
+}
+
+int BoxScenario::run(const RunContext& ctx) {
+  DriverHooks hooks;
+  hooks.before_step = [this](dem::DemSolver& s) { before_step(s); };
+  hooks.extra_columns = wall_columns_;
+  hooks.extra_columns.push_back("mass_inserted_kg");
+  hooks.extra_values = [this](const dem::DemSolver& s) {
+    std::vector<double> v;
+    for (const auto& w : s.walls()) {
+      Vec3 axis = Vec3::UnitZ();
+      if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
+      if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
+      v.push_back(w.force[2]);
+      v.push_back(w.torque.dot(axis));
+    }
+    v.push_back(inflow_.inserted);
+    return v;
+  };
+  hooks.save = [this](H5Out& f) {
+    std::ostringstream os;
+    os << rng_;
+    f.attr("rng_state", os.str());
+    f.attr("inflow_inserted_kg", inflow_.inserted);
+  };
+  hooks.load = [this](const H5In& f) {
+    std::istringstream is(f.attr_string("rng_state"));
+    is >> rng_;
+    inflow_.inserted = f.attr_double("inflow_inserted_kg");
+  };
+  DemDriver driver(*solver_, out_, hooks);
+  return driver.run(ctx);
+}
+
+}  // namespace lbdem::scenarios

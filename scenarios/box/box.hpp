@@ -1,0 +1,53 @@
+#pragma once
+// The general, config-driven DEM scenario: a box whose faces are walls, periodic or open; gravity;
+// materials; a contact law; particles from explicit lists and random fills; optional plane, cylinder
+// and STL walls with motion; an optional inflow (mass rate) and outlet. Quick experiments, the physics
+// tests and the benchmarks are all set up through it.
+#include <memory>
+#include <random>
+#include <string>
+
+#include "core/config.hpp"
+#include "dem/dem_solver.hpp"
+#include "dem/insertion.hpp"
+#include "scenarios/common/dem_config.hpp"
+#include "scenarios/common/dem_driver.hpp"
+#include "scenarios/common/run_context.hpp"
+
+namespace lbdem::scenarios {
+
+class BoxScenario {
+ public:
+  /// Reads and checks the whole config (throws InputError): nothing is written here.
+  explicit BoxScenario(const Config& cfg);
+  void banner(Log& log) const;
+  int run(const RunContext& ctx);
+  dem::DemSolver& solver() { return *solver_; }
+  const OutputSettings& output() const { return out_; }
+
+ private:
+  struct Inflow {
+    bool on = false;
+    Vec3 lo, hi, velocity;
+    double mass_rate = 0, start = 0, end = 0, period = 0;
+    int material = 0;
+    dem::RadiusDistribution radius;
+    double inserted = 0;  // [kg]
+  };
+  struct Outlet {
+    bool on = false;
+    Vec3 lo, hi;
+    std::int64_t every = 100;
+  };
+  void before_step(dem::DemSolver& s);
+
+  std::unique_ptr<dem::DemSolver> solver_;
+  OutputSettings out_;
+  StepChoice step_;
+  Inflow inflow_;
+  Outlet outlet_;
+  std::mt19937_64 rng_;
+  std::vector<std::string> wall_columns_;
+};
+
+}  // namespace lbdem::scenarios

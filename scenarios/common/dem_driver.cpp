@@ -1,0 +1,215 @@
+#include "scenarios/common/dem_driver.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.hpp"
+#include "core/h5.hpp"
+#include "core/progress.hpp"
+#include "core/time_series.hpp"
+
+namespace lbdem::scenarios {
+
+namespace fs = std::filesystem;
+
+
+OutputSettings OutputSettings::from(const Config& run, const Config& out) {
+  OutputSettings o;
+  o.end_time = run.require("end_time", Range::positive("give the simulated end time in seconds"));
+  o.interval = out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
+  o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10, Range::positive("give the snapshot interval in s"));
+  o.checkpoint_interval = out.get("checkpoint_interval", o.end_time / 4,
+                                  Range::non_negative("give the checkpoint interval in s (0: only at the end)"));
+  return o;
+}
+
+DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks)
+    : solver_(solver), out_(out), hooks_(std::move(hooks)) {
+  const double dt = solver_.settings().dt;
+  const auto steps = [&](double interval) {
+    return std::max<std::int64_t>(1, std::llround(interval / dt));
+  };
+  every_row_ = steps(out_.interval);
+  every_snapshot_ = steps(out_.snapshot_interval);
+  every_checkpoint_ = out_.checkpoint_interval > 0 ? steps(out_.checkpoint_interval) : 0;
+  last_step_ = std::llround(out_.end_time / dt);
+}
+
+namespace {
+const std::vector<std::string> kColumns = {
+    "time_s", "particles", "kinetic_energy_J", "kinetic_translational_J", "kinetic_rotational_J",
+    "potential_energy_J", "elastic_energy_J", "dissipated_normal_damping_J", "dissipated_tangential_damping_J",
+    "dissipated_sliding_J", "dissipated_rolling_J", "stiffness_change_J", "wall_work_J",
+    "energy_injected_J", "energy_balance_error_J", "contacts_pp", "contacts_pw", "collisions_pp",
+    "collisions_pw", "mass_removed_kg", "neighbour_rebuilds"};
+}  // namespace
+
+void DemDriver::write_row(double stored0) {
+  const auto e = solver_.energy();
+  const double injected = e.injected(stored0);
+  std::vector<double> row = {solver_.time(),
+                             double(solver_.particles().size()),
+                             e.kinetic(),
+                             e.kinetic_translational,
+                             e.kinetic_rotational,
+                             e.potential,
+                             e.elastic,
+                             e.normal_damping,
+                             e.tangential_damping,
+                             e.sliding,
+                             e.rolling,
+                             e.stiffness_change,
+                             e.wall_work,
+                             injected - stored0,
+                             e.stored() + e.dissipated() - injected,
+                             double(solver_.contacts_pp()),
+                             double(solver_.contacts_pw()),
+                             double(solver_.collisions().started_pp()),
+                             double(solver_.collisions().started_pw()),
+                             solver_.mass_removed(),
+                             double(solver_.rebuilds())};
+  if (hooks_.extra_values) {
+    const auto extra = hooks_.extra_values(solver_);
+    row.insert(row.end(), extra.begin(), extra.end());
+  }
+  ts_.row(row);
+}
+
+void DemDriver::write_snapshot(const std::string& dir) {
+  const auto& p = solver_.particles();
+  const int index = static_cast<int>(snapshot_times_.size());
+  char name[64];
+  std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", index);
+  fs::create_directories(dir + "/snapshots");
+  {
+    H5Out f(dir + "/" + name);
+    f.attr("time_s", solver_.time());
+    f.write("/position_m", p.x);
+    f.write("/velocity_m_per_s", p.v);
+    f.write("/angular_velocity_rad_per_s", p.omega);
+    f.write("/radius_m", p.radius);
+    f.write("/id", p.id);
+    f.write("/material", p.material);
+    f.commit();
+  }
+  snapshot_times_.push_back(solver_.time());
+  // particles.h5 links every snapshot (HDF5 external links), rewritten atomically each time.
+  H5Out master(dir + "/particles.h5");
+  master.write("/time_s", snapshot_times_);
+  master.group("/snapshots");
+  for (int k = 0; k <= index; ++k) {
+    std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", k);
+    char link[32];
+    std::snprintf(link, sizeof link, "/snapshots/%06d", k);
+    master.external_link(link, name, "/");
+  }
+  master.commit();
+  // ParaView: a temporal collection of polyvertex grids with radius and velocity attributes.
+  std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+                  "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (int k = 0; k <= index; ++k) {
+    std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", k);
+    const H5In in(dir + "/" + name);
+    const std::size_t n = in.doubles("/radius_m").size();
+    const std::string N = std::to_string(n);
+    char t[64];
+    std::snprintf(t, sizeof t, "%.9g", snapshot_times_[k]);
+    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + std::string(t) + "\"/>\n";
+    x += "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\"/>\n";
+    x += "    <Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"" + N +
+         " 3\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name + ":/position_m</DataItem></Geometry>\n";
+    const auto attr = [&](const char* a, const char* ds, bool vec) {
+      x += std::string("    <Attribute Name=\"") + a + "\" AttributeType=\"" + (vec ? "Vector" : "Scalar") +
+           "\" Center=\"Node\"><DataItem Dimensions=\"" + N + (vec ? " 3" : "") +
+           "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name + ":" + ds + "</DataItem></Attribute>\n";
+    };
+    attr("radius_m", "/radius_m", false);
+    attr("velocity_m_per_s", "/velocity_m_per_s", true);
+    x += "   </Grid>\n";
+  }
+  x += "  </Grid>\n </Domain>\n</Xdmf>\n";
+  write_file_atomic(dir + "/particles.xdmf", x);
+}
+
+void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
+  H5Out f(dir + "/checkpoint.h5");
+  f.attr("format", std::string("lbdem-checkpoint-1"));
+  f.attr("stored_energy_at_start_J", stored0);
+  f.attr("timeseries_rows", std::int64_t(ts_.rows()));
+  f.write("/snapshot_times_s", snapshot_times_);
+  solver_.save(f);
+  if (hooks_.save) hooks_.save(f);
+  f.commit();
+}
+
+int DemDriver::run(const RunContext& ctx) {
+  std::vector<std::string> cols = kColumns;
+  cols.insert(cols.end(), hooks_.extra_columns.begin(), hooks_.extra_columns.end());
+  double stored0 = 0;
+  const std::string ckpt = ctx.dir + "/checkpoint.h5";
+  if (ctx.resume) {
+    const H5In f(ckpt);
+    stored0 = f.attr_double("stored_energy_at_start_J");
+    const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
+    snapshot_times_ = f.doubles("/snapshot_times_s");
+    solver_.load(f);
+    if (hooks_.load) hooks_.load(f);
+    ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
+    ctx.log->line("resumed from " + ckpt + " at t = " + to_text(solver_.time()) + " s (step " +
+                  std::to_string(solver_.steps()) + ")");
+  } else {
+    stored0 = solver_.energy().stored();
+    ts_.open(ctx.dir + "/timeseries.csv", cols, -1);
+    write_row(stored0);
+    write_snapshot(ctx.dir);
+    write_checkpoint(ctx.dir, stored0);
+  }
+  Progress progress(out_.end_time, "particle-steps");
+  double work = 0;
+  while (solver_.steps() < last_step_) {
+    if (hooks_.before_step) hooks_.before_step(solver_);
+    solver_.step();
+    work += double(solver_.particles().size());
+    const std::int64_t s = solver_.steps();
+    const bool last = s == last_step_;
+    if (s % every_row_ == 0 || last) write_row(stored0);
+    if (s % every_snapshot_ == 0 || last) write_snapshot(ctx.dir);
+    if ((every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last) {
+      write_checkpoint(ctx.dir, stored0);
+      solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
+    }
+    progress.update(solver_.time(), work);
+  }
+  progress.update(solver_.time(), work, true);
+  progress.finish();
+  const auto e = solver_.energy();
+  const double injected = e.injected(stored0);
+  ctx.log->line("finished at t = " + to_text(solver_.time()) + " s after " + std::to_string(solver_.steps()) +
+                " steps; energy balance error " + to_text(e.stored() + e.dissipated() - injected) + " J of " +
+                to_text(injected - e.stored()) + " J dissipated or stored away");
+  return 0;
+}
+
+void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double tr, const std::string& where) {
+  const auto& p = s.particles();
+  double mass = 0, rmin = 1e300, rmax = 0;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    mass += p.mass[k], rmin = std::min(rmin, p.radius[k]), rmax = std::max(rmax, p.radius[k]);
+  const double dt = s.settings().dt;
+  log.line("DEM derived numbers:");
+  log.derived("particles", double(p.size()), "");
+  log.derived("total particle mass", mass, "kg");
+  log.derived("radius min / max", rmin, "m", "max " + to_text(rmax) + " m");
+  log.derived("characteristic impact speed", v, "m/s");
+  log.derived("contact time t_c", tc, "s", "(" + where + ")");
+  log.derived("time step dt", dt, "s");
+  log.derived("dt / t_c", dt / tc, "", "(steps per contact " + to_text(tc / dt) + ")");
+  log.derived("Rayleigh time", tr, "s", "(dt / T_R = " + to_text(dt / tr) + ")");
+  log.derived("neighbour skin", s.settings().skin, "m", "(" + to_text(s.settings().skin / (2 * rmin)) + " d_min)");
+  log.derived("interaction range beyond touch", s.interaction_range(), "m");
+  log.derived("walls", double(s.walls().size()), "");
+}
+
+}  // namespace lbdem::scenarios

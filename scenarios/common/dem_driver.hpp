@@ -1,0 +1,58 @@
+#pragma once
+// The time loop shared by DEM-only scenarios: output of timeseries.csv, particle snapshots
+// (particles.h5 + .xdmf), collisions.h5, periodic checkpoints and --resume, progress and the
+// start-up banner. Output and checkpoint instants are step counts, so a resumed run writes at the
+// same steps as one that never stopped.
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/config.hpp"
+#include "core/time_series.hpp"
+#include "dem/dem_solver.hpp"
+#include "scenarios/common/run_context.hpp"
+
+namespace lbdem::scenarios {
+
+struct OutputSettings {
+  double end_time = 1;             // [s]
+  double interval = 1e-2;          // timeseries.csv row interval [s]
+  double snapshot_interval = 0.1;  // particle snapshot interval [s]
+  double checkpoint_interval = 0;  // [s]; 0: only at the end
+  static OutputSettings from(const Config& run, const Config& out);
+};
+
+/// Scenario-specific parts of the loop.
+struct DriverHooks {
+  std::function<void(dem::DemSolver&)> before_step;           // inflow, outlet, motion, ...
+  std::vector<std::string> extra_columns;                      // extra timeseries.csv columns (SI)
+  std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
+  std::function<void(H5Out&)> save;                            // scenario state into the checkpoint
+  std::function<void(const H5In&)> load;
+};
+
+class DemDriver {
+ public:
+  DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks = {});
+  /// Runs to end_time (from the checkpoint if ctx.resume). Returns 0.
+  int run(const RunContext& ctx);
+
+ private:
+  void write_row(double stored0);
+  void write_snapshot(const std::string& dir);
+  void write_checkpoint(const std::string& dir, double stored0) const;
+
+  dem::DemSolver& solver_;
+  OutputSettings out_;
+  DriverHooks hooks_;
+  std::int64_t every_row_ = 1, every_snapshot_ = 1, every_checkpoint_ = 0, last_step_ = 0;
+  std::vector<double> snapshot_times_;
+  TimeSeries ts_;
+};
+
+/// Derived DEM numbers for the start-up banner (DESIGN §3).
+void dem_banner(Log& log, const dem::DemSolver& s, double impact_speed, double contact_time,
+                double rayleigh_time, const std::string& where);
+
+}  // namespace lbdem::scenarios

@@ -1,0 +1,42 @@
+// lbdem-cli: parse the command line (CLI11), read the TOML, build the scenario, run it.
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "core/error.hpp"
+#include "scenarios/run_command.hpp"
+
+int main(int argc, char** argv) {
+  using namespace lbdem::scenarios;
+  CLI::App app{"lbdem: coarse-grained CFD-DEM (lattice Boltzmann gas + OpenMP DEM)"};
+  app.require_subcommand(1);
+  RunOptions opt;
+  auto* run = app.add_subcommand("run", "run a scenario's default preset or a config file");
+  run->add_option("scenario", opt.scenario, "scenario name (see --list)");
+  run->add_option("--config", opt.config, "TOML config file (default: the scenario's default preset)");
+  run->add_option("--set", opt.sets, "override a key: --set key.path=value (repeatable)");
+  run->add_option("--out", opt.out, "run folder (default: runs/<scenario>-<date>-<time>)");
+  run->add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_option("--resume", opt.resume, "continue the run in RUN_DIR from its checkpoint.h5");
+  run->add_flag("--list", opt.list, "list the scenarios");
+  run->add_flag("--no-plots", opt.no_plots, "skip the PNG plots");
+  auto* study = app.add_subcommand("study", "run a multi-run study");
+  std::string study_name;
+  bool study_list = false;
+  study->add_option("name", study_name, "study name (see --list)");
+  study->add_flag("--list", study_list, "list the studies");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*study) return run_study(study_name, study_list);
+    return run_scenario(opt);
+  } catch (const lbdem::InputError& e) {
+    std::cerr << "lbdem: error: " << e.what() << "\n";
+    return lbdem::kInputErrorExit;
+  } catch (const std::exception& e) {
+    std::cerr << "lbdem: failed: " << e.what() << "\n";
+    return 1;
+  }
+}
