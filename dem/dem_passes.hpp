@@ -80,6 +80,8 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const DemSettings&
     const double ai = ri - half, aj = rj - half;  // centre to contact point
     g.v_rel = vi - vj + (ai * wi + aj * wj).cross(g.n);
     g.w_rel = wi - wj;
+    g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
+    g.w_half = p.omega[i] - p.omega[j];
     const ContactForce c = Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
     pl.force[k] = c.force;
     const Vec3 tc = g.n.cross(c.ft);
@@ -92,7 +94,7 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const DemSettings&
 /// Contact of particle k with wall entry e, given where the wall is seen from the centre.
 template <class Law, class Params>
 void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, const Vec3& vk,
-                  const Vec3& wk, const Vec3& n, double dist, const Vec3& wall_velocity,
+                  const Vec3& wk, const Vec3& vh, const Vec3& wh, const Vec3& n, double dist, const Vec3& wall_velocity,
                   const Vec3& origin, WallContactList& wc, std::size_t e, double time, double dt,
                   Vec3& f, Vec3& tq) {
   ContactGeometry g;
@@ -104,6 +106,8 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
   const double a = p.radius[k] - std::max(g.delta, 0.0);
   g.v_rel = vk + a * wk.cross(n) - wall_velocity;
   g.w_rel = wk;
+  g.v_half = vh + a * wh.cross(n) - wall_velocity;
+  g.w_half = wh;
   const ContactForce c = Law::evaluate(prm, g, wc.history[e], dt);
   const Vec3 point = p.x[k] + a * n;
   f += c.force;
@@ -128,6 +132,7 @@ void run_particle_pass(const Table& tab, ParticleArrays& p, const DemSettings& s
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3 vk = p.v[k] + (h / p.mass[k]) * p.force[k];
     const Vec3 wk = p.omega[k] + (h / p.inertia[k]) * p.torque[k];
+    const Vec3 vh = p.v[k], wh = p.omega[k];
     Vec3 f = p.mass[k] * s.gravity;
     Vec3 tq = Vec3::Zero();
     // Walls first, in entry order (sorted by wall, then triangle).
@@ -166,13 +171,13 @@ void run_particle_pass(const Table& tab, ParticleArrays& p, const DemSettings& s
           const std::size_t q = hit_entry[m];
           const Vec3 d = hits[m].closest.point - p.x[k];
           const double dist = std::sqrt(hits[m].closest.dist2);
-          wall_contact<Law>(prm, p, k, vk, wk, d / dist, dist,
+          wall_contact<Law>(prm, p, k, vk, wk, vh, wh, d / dist, dist,
                             mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin, wc,
                             q, time, dt, f, tq);
         }
         for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
           if (!kept_entry[q - e] && wc.state[q])
-            wall_contact<Law>(prm, p, k, vk, wk, Vec3::UnitZ(), 1e300, Vec3::Zero(), w.torque_origin,
+            wall_contact<Law>(prm, p, k, vk, wk, vh, wh, Vec3::UnitZ(), 1e300, Vec3::Zero(), w.torque_origin,
                               wc, q, time, dt, f, tq);
         e = e1;
       } else {
@@ -186,7 +191,7 @@ void run_particle_pass(const Table& tab, ParticleArrays& p, const DemSettings& s
             },
             w.shape);
         if (p.radius[k] - wp.dist > -range || wc.state[e])
-          wall_contact<Law>(prm, p, k, vk, wk, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
+          wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
                             w.torque_origin, wc, e, time, dt, f, tq);
         ++e;
       }

@@ -38,10 +38,15 @@ struct ContactLaw {
   /// Tangential spring (Cundall & Strack 1979; Luding 2008): xi is kept in the tangent plane by
   /// projection with its length preserved, grows by v_t dt, gives F_t = -k_t xi - gamma_t v_t and is
   /// capped at mu max(F_n, 0), F_n the normal contact force (elastic + damping, cohesion excluded).
-  /// While sliding the spring carries the whole capped force (xi = -F_t/k_t) and the energy this cut
-  /// removes from the spring is the sliding dissipation. When k_t changes with the overlap (Mindlin),
+  /// Energy is booked so that the budget closes at the order of velocity Verlet: every term below is
+  /// the exact counterpart of the trapezoidal work of the step.
+  /// While sliding the spring carries the whole capped force (xi = -F_t/k_t); the sliding dissipation
+  /// is the friction force times the slip |xi_trial - xi|, with the force averaged over the step
+  /// (trapezoidal, as velocity Verlet integrates the work): zero for mu = 0, and exactly the work
+  /// minus the change of spring energy in gross sliding, so the budget closes at second order. When k_t changes with the overlap (Mindlin),
   /// 0.5 (k_t,new - k_t,old) |xi|^2 enters the spring without work: it is booked as e_stiffness so
-  /// that the energy budget closes; at separation the spring's energy leaves the same way.
+  /// that the energy budget closes (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's
+  /// energy leaves the same way.
   static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h, double dt) {
     ContactForce out;
     double f_coh = 0;
@@ -71,27 +76,36 @@ struct ContactLaw {
       const double t2 = t.squaredNorm();
       h.xi = t2 > 0 ? Vec3(t * std::sqrt(x2 / t2)) : Vec3::Zero();
     }
-    out.e_stiffness = 0.5 * (s.k_t - h.kt) * h.xi.squaredNorm();
+    const Vec3 xi_start = h.xi;
+    const double f_start = h.kt * h.xi.norm();  // spring force applied at the start of the step
+    const double kt_old = h.kt;
     h.kt = s.k_t;
-    h.xi += vt * dt;
+    // The elongation grows by the relative displacement of the step (mid-step velocity, as the
+    // positions moved); the end-of-step velocity would make the spring energy drift at first order.
+    const Vec3 vh = g.v_half - g.v_half.dot(g.n) * g.n;
+    h.xi += vh * dt;
     const double gt = p.tangential_damping ? Normal::tangential_c(p.normal) * std::sqrt(g.m_star * s.k_t) : 0.0;
     Vec3 ft = -s.k_t * h.xi - gt * vt;
     const double cap = p.friction * std::max(fn, 0.0);
     const double f2 = ft.squaredNorm();
     if (f2 > cap * cap) {
-      const double u_before = 0.5 * s.k_t * h.xi.squaredNorm();
       ft *= cap / std::sqrt(f2);
+      const Vec3 xi_trial = h.xi;
       h.xi = -ft / s.k_t;
-      out.e_sliding = u_before - 0.5 * s.k_t * h.xi.squaredNorm();
+      out.e_sliding = 0.5 * (f_start + cap) * (xi_trial - h.xi).norm();
     } else {
       out.p_tangential_damping = gt * vt.squaredNorm();
     }
+    // Stiffness change at the trapezoidal level: U_{n+1} - U_n + (work of the spring force, averaged
+    // over the step) = 1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}.
+    out.e_stiffness = 0.5 * (s.k_t - kt_old) * xi_start.dot(h.xi);
     out.u_elastic += 0.5 * s.k_t * h.xi.squaredNorm();
     out.ft = ft;
 
     if constexpr (Rolling::active) {
       const Vec3 wr = g.w_rel - g.w_rel.dot(g.n) * g.n;
-      Rolling::apply(p.rolling, g, wr, fn, s.k_n, dt, h, out);
+      const Vec3 wh = g.w_half - g.w_half.dot(g.n) * g.n;
+      Rolling::apply(p.rolling, g, wr, wh, fn, s.k_n, dt, h, out);
     }
     out.force = (f_coh - fn) * g.n + ft;
     return out;

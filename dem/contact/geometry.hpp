@@ -11,8 +11,10 @@ struct ContactGeometry {
   double r_star;  // effective radius R1 R2/(R1+R2) (R for a wall) [m]
   double m_star;  // effective mass [kg]
   double i_star;  // effective moment of inertia I1 I2/(I1+I2) [kg m^2] (rolling-torque limiter)
-  Vec3 v_rel;     // velocity of i's contact point relative to j's [m/s]
-  Vec3 w_rel;     // omega_i - omega_j [rad/s]
+  Vec3 v_rel;     // velocity of i's contact point relative to j's, end of step (dashpots) [m/s]
+  Vec3 w_rel;     // omega_i - omega_j, end of step [rad/s]
+  Vec3 v_half;    // the same at mid-step: v_half dt is the relative displacement of the step [m/s]
+  Vec3 w_half;    // omega_i - omega_j at mid-step: w_half dt is the relative rotation [rad/s]
 };
 
 /// State a contact carries from step to step (like LAMMPS' per-pair history).

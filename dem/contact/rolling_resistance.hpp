@@ -28,8 +28,8 @@ struct ConstantTorqueRolling {
   static constexpr std::string_view name = "constant_torque";
   static constexpr bool active = true;
 
-  static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r, double fn,
-                    double /*k_n*/, double dt, ContactHistory& /*h*/, ContactForce& out) {
+  static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r, const Vec3& /*half*/,
+                    double fn, double /*k_n*/, double dt, ContactHistory& /*h*/, ContactForce& out) {
     const double w = omega_r.norm();
     if (w <= 0 || fn <= 0) return;
     const double m = std::min(p.mu_r * p.arm_factor * g.r_star * fn, g.i_star * w / dt);
@@ -40,7 +40,8 @@ struct ConstantTorqueRolling {
 
 /// Model C without its viscous part (elastic-plastic spring, "EPSD"): k_r = 2.25 k_n mu_r^2 r_arm^2
 /// (Ai et al. 2011, eq. 16), M = -k_r theta with theta the accumulated rolling rotation, capped at
-/// mu_r r_arm F_n (full mobilisation, eq. 14). The energy lost at the cap is booked as rolling dissipation.
+/// mu_r r_arm F_n (full mobilisation, eq. 14); the limit torque times the plastic rotation is the
+/// rolling dissipation.
 struct EpsdRolling {
   struct Params {
     double mu_r;
@@ -49,8 +50,9 @@ struct EpsdRolling {
   static constexpr std::string_view name = "epsd";
   static constexpr bool active = true;
 
-  static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r, double fn,
-                    double k_n, double dt, ContactHistory& h, ContactForce& out) {
+  static void apply(const Params& p, const ContactGeometry& g, const Vec3& /*omega_r*/,
+                    const Vec3& omega_half, double fn, double k_n, double dt, ContactHistory& h,
+                    ContactForce& out) {
     const double arm = p.arm_factor * g.r_star;
     const double kr = 2.25 * k_n * p.mu_r * p.mu_r * arm * arm;
     // Keep theta in the tangent plane (rotate with the contact, keep its magnitude).
@@ -60,18 +62,21 @@ struct EpsdRolling {
       const double tn2 = t.squaredNorm();
       h.theta = tn2 > 0 ? Vec3(t * std::sqrt(t2 / tn2)) : Vec3::Zero();
     }
-    out.e_stiffness += 0.5 * (kr - h.kr) * h.theta.squaredNorm();
+    const Vec3 theta_start = h.theta;
+    const double kr_old = h.kr;
+    const double m_start = kr_old * h.theta.norm();
     h.kr = kr;
-    h.theta += omega_r * dt;
+    h.theta += omega_half * dt;  // rotation of the step (mid-step rate, see contact_law.hpp)
     Vec3 m = -kr * h.theta;
     const double cap = p.mu_r * arm * std::max(fn, 0.0);
     const double mm = m.norm();
     if (mm > cap) {
-      const double u_before = 0.5 * kr * h.theta.squaredNorm();
       m *= cap / mm;
+      const Vec3 theta_trial = h.theta;
       h.theta = kr > 0 ? Vec3(-m / kr) : Vec3::Zero();
-      out.e_rolling += u_before - 0.5 * kr * h.theta.squaredNorm();
+      out.e_rolling += 0.5 * (m_start + cap) * (theta_trial - h.theta).norm();  // torque x plastic rotation
     }
+    out.e_stiffness += 0.5 * (kr - kr_old) * theta_start.dot(h.theta);  // as for the tangential spring
     out.m_roll = m;
     out.u_elastic += 0.5 * kr * h.theta.squaredNorm();
   }
