@@ -40,10 +40,12 @@ struct ContactLaw {
   /// capped at mu max(F_n, 0), F_n the normal contact force (elastic + damping, cohesion excluded).
   /// Energy is booked so that the budget closes at the order of velocity Verlet: every term below is
   /// the exact counterpart of the trapezoidal work of the step.
-  /// While sliding the spring carries the whole capped force (xi = -F_t/k_t); the sliding dissipation
-  /// is the friction force times the slip |xi_trial - xi|, with the force averaged over the step
-  /// (trapezoidal, as velocity Verlet integrates the work): zero for mu = 0, and exactly the work
-  /// minus the change of spring energy in gross sliding, so the budget closes at second order. When k_t changes with the overlap (Mindlin),
+  /// Sliding starts when the spring alone exceeds the cap: the spring is cut back to it, the dashpot
+  /// is off, and the sliding dissipation is the spring force, averaged over the step as velocity
+  /// Verlet averages the work, times the slip xi_trial - xi (zero for mu = 0; exactly the work minus
+  /// the change of spring energy). Below that, spring + dashpot is limited to the cap by limiting the
+  /// dashpot, which dissipates -(F_t - F_spring) . v_t. So no account turns negative and the budget
+  /// closes at second order. When k_t changes with the overlap (Mindlin),
   /// 0.5 (k_t,new - k_t,old) |xi|^2 enters the spring without work: it is booked as e_stiffness so
   /// that the energy budget closes (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's
   /// energy leaves the same way.
@@ -77,7 +79,6 @@ struct ContactLaw {
       h.xi = t2 > 0 ? Vec3(t * std::sqrt(x2 / t2)) : Vec3::Zero();
     }
     const Vec3 xi_start = h.xi;
-    const double f_start = h.kt * h.xi.norm();  // spring force applied at the start of the step
     const double kt_old = h.kt;
     h.kt = s.k_t;
     // The elongation grows by the relative displacement of the step (mid-step velocity, as the
@@ -85,16 +86,20 @@ struct ContactLaw {
     const Vec3 vh = g.v_half - g.v_half.dot(g.n) * g.n;
     h.xi += vh * dt;
     const double gt = p.tangential_damping ? Normal::tangential_c(p.normal) * std::sqrt(g.m_star * s.k_t) : 0.0;
-    Vec3 ft = -s.k_t * h.xi - gt * vt;
     const double cap = p.friction * std::max(fn, 0.0);
-    const double f2 = ft.squaredNorm();
-    if (f2 > cap * cap) {
-      ft *= cap / std::sqrt(f2);
+    const Vec3 fs = -s.k_t * h.xi;  // spring
+    Vec3 ft;
+    if (fs.squaredNorm() > cap * cap) {  // sliding: the spring is cut back to the cap, no dashpot
+      const double fsn = fs.norm();
+      ft = fs * (cap / fsn);
       const Vec3 xi_trial = h.xi;
       h.xi = -ft / s.k_t;
-      out.e_sliding = 0.5 * (f_start + cap) * (xi_trial - h.xi).norm();
+      out.e_sliding = 0.5 * (kt_old * xi_start + s.k_t * h.xi).dot(xi_trial - h.xi);
     } else {
-      out.p_tangential_damping = gt * vt.squaredNorm();
+      ft = fs - gt * vt;
+      const double f2 = ft.squaredNorm();
+      if (f2 > cap * cap) ft *= cap / std::sqrt(f2);  // the dashpot is limited so that |F_t| <= cap
+      out.p_tangential_damping = -(ft - fs).dot(vt);
     }
     // Stiffness change at the trapezoidal level: U_{n+1} - U_n + (work of the spring force, averaged
     // over the step) = 1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}.
