@@ -137,8 +137,10 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
   H5Out f(dir + "/checkpoint.h5");
   f.attr("format", std::string("lbdem-checkpoint-1"));
   f.attr("stored_energy_at_start_J", stored0);
-  f.attr("timeseries_rows", std::int64_t(ts_.rows()));
-  f.write("/snapshot_times_s", snapshot_times_);
+  f.attr("timeseries_rows", std::int64_t(ts_.rows() - (extra_row_ ? 1 : 0)));
+  std::vector<double> snaps = snapshot_times_;
+  if (extra_snapshot_ && !snaps.empty()) snaps.pop_back();
+  f.write("/snapshot_times_s", snaps);
   solver_.save(f);
   if (hooks_.save) hooks_.save(f);
   f.commit();
@@ -174,6 +176,10 @@ int DemDriver::run(const RunContext& ctx) {
     work += double(solver_.particles().size());
     const std::int64_t s = solver_.steps();
     const bool last = s == last_step_;
+    // Rows and snapshots written only because the run ends here are not kept by a resume, so that
+    // a resumed series equals an uninterrupted one.
+    extra_row_ = last && s % every_row_ != 0;
+    extra_snapshot_ = last && s % every_snapshot_ != 0;
     if (s % every_row_ == 0 || last) write_row(stored0);
     if (s % every_snapshot_ == 0 || last) write_snapshot(ctx.dir);
     if ((every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last) {

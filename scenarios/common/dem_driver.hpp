@@ -48,6 +48,7 @@ class DemDriver {
   DriverHooks hooks_;
   std::int64_t every_row_ = 1, every_snapshot_ = 1, every_checkpoint_ = 0, last_step_ = 0;
   std::vector<double> snapshot_times_;
+  bool extra_row_ = false, extra_snapshot_ = false;
   TimeSeries ts_;
 };
 
