@@ -110,11 +110,13 @@ def energy_budget(cols, t, tlabel, run_name, out):
         scale = max(scale_terms + [0.0])
         tiny = max(1e-9 * scale, 1e-300)
         # A closed system (injected identically 0) is judged against its own energy scale.
-        if inj is not None and (np.abs(inj[np.isfinite(inj)]) > 0.0).any():
-            # Running max: the energy put in so far, which stays a sane reference when the
-            # injected work oscillates through zero (e.g. a wall that pushes and pulls).
-            denom = np.maximum(np.fmax.accumulate(np.abs(inj)), tiny)
-            ylabel = "balance error /\nmax |injected| so far [-]"
+        diss = sum(cols[c] for c in cols if c.startswith("dissipated_"))
+        ref = (np.abs(inj) if inj is not None else 0.0) + (diss if not isinstance(diss, int) else 0.0)
+        if np.ndim(ref) and (np.abs(ref[np.isfinite(ref)]) > 0.0).any():
+            # The energy that has passed through the budget so far (dissipated + |injected|), as a
+            # running max: it stays a sane reference when wall work oscillates through zero.
+            denom = np.maximum(np.fmax.accumulate(ref), tiny)
+            ylabel = "balance error /\n(dissipated + |injected|) [-]"
         elif scale > 0.0:
             denom = np.full_like(err, scale)
             ylabel = "balance error /\nmax |energy term| [-]"
