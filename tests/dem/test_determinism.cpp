@@ -48,7 +48,7 @@ bool same(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 }
 }  // namespace
 
-TEST_CASE("bitwise identical results on 1, 2 and 4 threads", "[dem][determinism]") {
+TEST_CASE("bitwise identical results on 1, 2 and 4 threads", "[dem][determinism][slow]") {
   const State a = run(1), b = run(2), c = run(4);
   omp_set_num_threads(omp_get_num_procs());
   REQUIRE(a.x.size() == 800);
