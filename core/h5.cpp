@@ -77,6 +77,12 @@ void H5Out::write_matrix(const std::string& name, const std::vector<double>& v, 
   write_raw(name, H5T_NATIVE_DOUBLE, v.data(), 2, d);
 }
 
+void H5Out::write_array(const std::string& name, const std::vector<double>& v,
+                        const std::vector<std::size_t>& dims) {
+  std::vector<hsize_t> d(dims.begin(), dims.end());
+  write_raw(name, H5T_NATIVE_DOUBLE, v.data(), static_cast<int>(d.size()), d.data());
+}
+
 void H5Out::attr(const std::string& name, double v, const std::string& object) {
   hid_t space = H5Screate(H5S_SCALAR);
   hid_t a = H5Acreate_by_name(file_, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE, space,

@@ -25,6 +25,8 @@ class H5Out {
   void write(const std::string& name, const std::vector<std::uint8_t>& v);
   void write_matrix(const std::string& name, const std::vector<double>& v, std::size_t rows,
                     std::size_t cols);
+  /// Row-major array of any rank (last dimension fastest).
+  void write_array(const std::string& name, const std::vector<double>& v, const std::vector<std::size_t>& dims);
   void attr(const std::string& name, double v, const std::string& object = "/");
   void attr(const std::string& name, std::int64_t v, const std::string& object = "/");
   void attr(const std::string& name, const std::string& v, const std::string& object = "/");

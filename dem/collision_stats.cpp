@@ -42,13 +42,12 @@ void CollisionStats::add_closed(const ContactTally& t) {
   closed_[3] += t.e_rolling;
 }
 
-void CollisionStats::on_end(bool wall, const ContactTally& t, double t_end, std::int64_t id_i,
+void CollisionStats::on_end(const ContactTally& t, double t_end, std::int64_t id_i,
                             std::int64_t id_j, const Vec3& where) {
   add_closed(t);
   const std::size_t c = grid_.cell_of(where);
   ++grid_count_[c];
   grid_energy_[c] += t.dissipated();
-  (void)wall;
   if (s_.rows && t_end >= s_.rows_t0 && t_end <= s_.rows_t1) {
     if (static_cast<std::int64_t>(rows_.size()) < s_.row_budget) {
       rows_.push_back({t.t_start, t_end, id_i, id_j, t.vn_impact, t.vt_impact, t.max_overlap,
@@ -79,9 +78,11 @@ void CollisionStats::write(const std::string& path, double time) const {
   f.attr("rows_dropped_over_budget", rows_dropped_, "/totals");
   f.group("/grid");
   std::vector<double> counts(grid_count_.begin(), grid_count_.end());
-  f.write_matrix("/grid/counts", counts, grid_.cells(), 1);
-  f.write_matrix("/grid/dissipated_J", grid_energy_, grid_.cells(), 1);
-  f.write("/grid/shape_zyx", std::vector<std::int64_t>{grid_.n[2], grid_.n[1], grid_.n[0]});
+  // x varies fastest in the cell index, so the HDF5 shape is (nz, ny, nx).
+  const std::vector<std::size_t> shape = {std::size_t(grid_.n[2]), std::size_t(grid_.n[1]), std::size_t(grid_.n[0])};
+  f.write_array("/grid/counts", counts, shape);
+  f.write_array("/grid/dissipated_J", grid_energy_, shape);
+  f.attr("axis_order", std::string("zyx"), "/grid");
   std::vector<double> lo = {grid_.lo[0], grid_.lo[1], grid_.lo[2]};
   std::vector<double> hi = {grid_.lo[0] + grid_.n[0] / grid_.inv_h[0], grid_.lo[1] + grid_.n[1] / grid_.inv_h[1],
                             grid_.lo[2] + grid_.n[2] / grid_.inv_h[2]};
@@ -140,7 +141,7 @@ void CollisionStats::load(const H5In& in, const std::string& g) {
   grid_energy_ = in.doubles(g + "/grid_energy");
   const auto rows = in.doubles(g + "/rows");
   rows_.clear();
-  for (std::size_t k = 0; k + 8 < rows.size() + 0 && k + 9 <= rows.size(); k += 9)
+  for (std::size_t k = 0; k + 9 <= rows.size(); k += 9)
     rows_.push_back({rows[k], rows[k + 1], std::int64_t(rows[k + 2]), std::int64_t(rows[k + 3]),
                      rows[k + 4], rows[k + 5], rows[k + 6], rows[k + 7], rows[k + 8]});
 }

@@ -181,15 +181,7 @@ void run_particle_pass(const Table& tab, ParticleArrays& p, const DemSettings& s
                               wc, q, time, dt, f, tq);
         e = e1;
       } else {
-        const WallPoint wp = std::visit(
-            [&](const auto& shape) -> WallPoint {
-              if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshWall>) {
-                return {};
-              } else {
-                return wall_point(shape, p.x[k], time);
-              }
-            },
-            w.shape);
+        const WallPoint wp = analytic_wall_point(w, p.x[k], time);
         if (p.radius[k] - wp.dist > -range || wc.state[e])
           wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
                             w.torque_origin, wc, e, time, dt, f, tq);

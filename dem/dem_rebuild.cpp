@@ -140,15 +140,7 @@ void DemSolver::build_wall_list(const CellList& cells, double extra) {
           if (m->closest(t, x).dist2 < reach * reach) add(w, t);
         }
       } else {
-        const WallPoint wp = std::visit(
-            [&](const auto& shape) -> WallPoint {
-              if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshWall>) {
-                return {};
-              } else {
-                return wall_point(shape, x, t_);
-              }
-            },
-            walls_[w].shape);
+        const WallPoint wp = analytic_wall_point(walls_[w], x, t_);
         if (wp.dist < reach) add(w, -1);
       }
     }

@@ -109,7 +109,7 @@ void DemSolver::event_scan() {
       if (st & kStarted) stats_.on_start(wall, tally[k].vn_impact, tally[k].vt_impact);
       if (st & kEnded) {
         const auto [a, b] = ids(k);
-        stats_.on_end(wall, tally[k], t_, a, b, where(k));
+        stats_.on_end(tally[k], t_, a, b, where(k));
         stiffness_closed_ += tally[k].e_stiffness;
         const double u = tally[k].u_elastic;
         tally[k] = ContactTally{};

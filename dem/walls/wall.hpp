@@ -1,6 +1,8 @@
 #pragma once
 // A wall of any shape, with the loads it received in the last step.
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "dem/walls/cylinder_wall.hpp"
@@ -18,6 +20,20 @@ struct Wall {
   Vec3 force = Vec3::Zero();   // [N]
   Vec3 torque = Vec3::Zero();  // [N m]
 };
+
+/// Where an analytic wall (plane or cylinder) is seen from x at time t. Mesh walls have per-triangle
+/// contacts (MeshWall::closest) and must not be passed here.
+inline WallPoint analytic_wall_point(const Wall& w, const Vec3& x, double t) {
+  return std::visit(
+      [&](const auto& shape) -> WallPoint {
+        if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshWall>) {
+          return {Vec3::UnitX(), std::numeric_limits<double>::infinity(), x, Vec3::Zero()};
+        } else {
+          return wall_point(shape, x, t);
+        }
+      },
+      w.shape);
+}
 
 /// One particle-wall interaction candidate (built at neighbour rebuilds, sorted by particle).
 struct WallContactList {

@@ -116,8 +116,8 @@ BoxScenario::BoxScenario(const Config& cfg) {
 
   const Config inflow = cfg.section("inflow");
   inflow_.on = inflow.get_bool("enabled", false);
-  double r_min = 1e300, r_max = 0;
-  for (const auto& q : init) r_min = std::min(r_min, q.r), r_max = std::max(r_max, q.r);
+  double r_min = 1e300;
+  for (const auto& q : init) r_min = std::min(r_min, q.r);
   if (inflow_.on) {
     inflow_.lo = inflow.require_vec3("lo");
     inflow_.hi = inflow.require_vec3("hi");
@@ -129,7 +129,6 @@ BoxScenario::BoxScenario(const Config& cfg) {
     inflow_.velocity = inflow.get_vec3("velocity", Vec3::Zero());
     inflow_.radius = read_radius(inflow.section("radius"));
     r_min = std::min(r_min, inflow_.radius.smallest());
-    r_max = std::max(r_max, inflow_.radius.largest());
   }
   const Config outlet = cfg.section("outlet");
   outlet_.on = outlet.get_bool("enabled", false);
@@ -148,7 +147,6 @@ BoxScenario::BoxScenario(const Config& cfg) {
   s.skin = dcfg.get("skin", 0.2 * r_min, Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
   s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
   out_ = OutputSettings::from(run, cfg.section("output"));
-  (void)r_max;
 
   solver_ = std::make_unique<dem::DemSolver>(s, mats);
   for (auto& w : walls) {
