@@ -1,6 +1,6 @@
 #pragma once
 // Small builders for the DEM tests: a solver with one material, no gravity unless asked, a big
-// non-periodic domain, and helpers for one- and two-particle experiments.
+// non-periodic 20 mm domain, and helpers for one- and two-particle experiments.
 #include <cmath>
 
 #include "dem/dem_solver.hpp"
@@ -24,8 +24,9 @@ inline dem::DemSettings settings(double dt, const Vec3& g = Vec3::Zero()) {
   s.dt = dt;
   s.gravity = g;
   s.skin = 1e-4;
-  s.domain.lo = Vec3(-0.05, -0.05, -0.05);
-  s.domain.hi = Vec3(0.05, 0.05, 0.05);
+  // Small: the cell grid spans the domain, and a few thousand cells keep rebuilds cheap.
+  s.domain.lo = Vec3(-0.01, -0.01, -0.01);
+  s.domain.hi = Vec3(0.01, 0.01, 0.01);
   return s;
 }
 
