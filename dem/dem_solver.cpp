@@ -80,6 +80,15 @@ void DemSolver::step() {
   update_walls();
   const double max_d = std::sqrt(max_d2);
   if (need_rebuild_ || 2 * max_d > s_.skin || max_d + wall_displacement() > s_.skin) rebuild();
+  // Velocities predicted to the end of the step (after the rebuild, which may reorder particles).
+  const std::size_t np = p_.size();
+  v_pred_.resize(np);
+  w_pred_.resize(np);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
+    v_pred_[k] = p_.v[k] + (h / p_.mass[k]) * p_.force[k];
+    w_pred_[k] = p_.omega[k] + (h / p_.inertia[k]) * p_.torque[k];
+  }
   std::visit(
       [&](const auto& table) {
         pair_pass(table);
@@ -92,12 +101,12 @@ void DemSolver::step() {
 
 template <class Table>
 void DemSolver::pair_pass(const Table& t) {
-  run_pair_pass(t, p_, s_, pairs_, t_);
+  run_pair_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, pairs_, t_);
 }
 
 template <class Table>
 void DemSolver::particle_pass(const Table& t) {
-  run_particle_pass(t, p_, s_, walls_, pairs_, wc_, t_);
+  run_particle_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, walls_, pairs_, wc_, t_);
 }
 
 void DemSolver::event_scan() {

@@ -114,6 +114,7 @@ class DemSolver {
   WallContactList wc_;
   CollisionStats stats_;
   std::vector<Vec3> x_ref_;                       // positions at the last rebuild
+  std::vector<Vec3> v_pred_, w_pred_;             // end-of-step predicted velocities (per step)
   std::vector<std::vector<Vec3>> wall_ref_;       // mesh vertices at the last rebuild
   std::vector<std::uint8_t> remove_flag_;
   double t_ = 0;
