@@ -59,23 +59,20 @@ struct Predicted {
 
 template <class Table>
 [[gnu::flatten]] inline void pair_kernel(const Table& tab, const ParticleArrays& p, const Predicted& pr,
-                                         const DemSettings& s, PairList& pl, double time, std::size_t k) {
+                                         const DemSettings& s, PairList& pl, double time, std::size_t k,
+                                         const Vec3& d, double r2) {
   using Law = typename Table::law_type;
-  const double dt = s.dt, range = tab.range;
-  const Domain& dom = s.domain;
+  const double dt = s.dt;
     const std::uint32_t i = pl.i[k], j = pl.j[k];
-    Vec3 d = p.x[j] - p.x[i];
-    if (dom.any_periodic()) d = dom.min_image(d);
-    const double r2 = d.squaredNorm();
     const double ri = p.radius[i], rj = p.radius[j], rs = ri + rj;
-    if (r2 >= (rs + range) * (rs + range) && !pl.state[k]) return;
     const double dist = std::sqrt(r2);
     ContactGeometry g;
     g.n = d / dist;
     g.delta = rs - dist;
     g.r_star = ri * rj / rs;
     g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-    g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
+    g.i_star = 0;  // read only by the constant-torque rolling model
+    if constexpr (Law::Rolling::active) g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
     // Velocities predicted to the end of the step (see dem_solver.hpp).
     const Vec3& vi = pr.v[i];
     const Vec3& vj = pr.v[j];
@@ -99,8 +96,21 @@ template <class Table>
 void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr, const DemSettings& s,
                    PairList& pl, double time) {
   const std::size_t np = pl.size();
+  const double range = tab.range;
+  const Domain& dom = s.domain;
+  const bool per = dom.any_periodic();
+  // The distance test stays in the loop: most listed pairs are in the skin only, and the kernel's
+  // large frame is set up just for those that interact.
 #pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) pair_kernel(tab, p, pr, s, pl, time, k);
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::uint32_t i = pl.i[k], j = pl.j[k];
+    Vec3 d = p.x[j] - p.x[i];
+    if (per) d = dom.min_image(d);
+    const double r2 = d.squaredNorm();
+    const double reach = p.radius[i] + p.radius[j] + range;
+    if (r2 >= reach * reach && !pl.state[k]) continue;
+    pair_kernel(tab, p, pr, s, pl, time, k, d, r2);
+  }
 }
 
 /// Contact of particle k with wall entry e, given where the wall is seen from the centre.

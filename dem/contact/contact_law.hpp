@@ -85,7 +85,7 @@ struct ContactLaw {
     // positions moved); the end-of-step velocity would make the spring energy drift at first order.
     const Vec3 vh = g.v_half - g.v_half.dot(g.n) * g.n;
     h.xi += vh * dt;
-    const double gt = p.tangential_damping ? Normal::tangential_c(p.normal) * std::sqrt(g.m_star * s.k_t) : 0.0;
+    const double gt = p.tangential_damping ? gam * Normal::tangential_damping_ratio(p.normal) : 0.0;
     const double cap = p.friction * std::max(fn, 0.0);
     const Vec3 fs = -s.k_t * h.xi;  // spring
     Vec3 ft;

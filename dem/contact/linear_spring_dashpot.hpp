@@ -17,6 +17,7 @@ struct LinearSpringDashpot {
     double c_damp;      // gamma / sqrt(m* k) [-]
     double kt_ratio;    // k_t / k_n [-]
     double gamma_abs;   // if > 0: absolute damping coefficient [N s/m] overriding c_damp
+    double t_ratio;     // gamma_t / gamma_n = sqrt(k_t / k_n) [-]
   };
   static constexpr std::string_view name = "linear";
 
@@ -29,11 +30,12 @@ struct LinearSpringDashpot {
   static double gamma(const Params& p, const State& s, double m_star) {
     return p.gamma_abs > 0 ? p.gamma_abs : p.c_damp * std::sqrt(m_star * s.k_n);
   }
-  /// Tangential damping per unit sqrt(m* k_t): the same ratio as the normal one.
-  static double tangential_c(const Params& p) { return p.c_damp; }
+  /// gamma_t / gamma_n: the same damping ratio as the normal dashpot, gamma_t = c sqrt(m* k_t), so
+  /// gamma_t / gamma_n = sqrt(k_t / k_n).
+  static double tangential_damping_ratio(const Params& p) { return p.t_ratio; }
 
   static Params from(const MaterialPair& m, double kt_ratio) {
-    return {m.stiffness, 2.0 * std::abs(restitution_beta(m.restitution)), kt_ratio, 0.0};
+    return {m.stiffness, 2.0 * std::abs(restitution_beta(m.restitution)), kt_ratio, 0.0, std::sqrt(kt_ratio)};
   }
 };
 

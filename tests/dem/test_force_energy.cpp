@@ -12,7 +12,7 @@ using namespace lbdem;
 TEST_CASE("elastic force is minus the derivative of the stored energy", "[dem][physics]") {
   const double r_star = 2.5e-4;
   const dem::HertzMindlin::Params hm{2.7e6, 1e6, 0, 0};
-  const dem::LinearSpringDashpot::Params ls{1000, 0, 2.0 / 7.0, 0};
+  const dem::LinearSpringDashpot::Params ls{1000, 0, 2.0 / 7.0, 0, 0};
   for (double d : {1e-7, 1e-6, 1e-5}) {
     const double h = 1e-4 * d;
     const auto up = dem::HertzMindlin::elastic(hm, d + h, r_star), dn = dem::HertzMindlin::elastic(hm, d - h, r_star);
