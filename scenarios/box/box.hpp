@@ -23,6 +23,8 @@ class BoxScenario {
   void banner(Log& log) const;
   int run(const RunContext& ctx);
   dem::DemSolver& solver() { return *solver_; }
+  /// Inflow and outlet, called by the driver before every step (public for tests that step by hand).
+  void before_step(dem::DemSolver& s);
   const OutputSettings& output() const { return out_; }
 
  private:
@@ -39,7 +41,6 @@ class BoxScenario {
     Vec3 lo, hi;
     std::int64_t every = 100;
   };
-  void before_step(dem::DemSolver& s);
 
   std::unique_ptr<dem::DemSolver> solver_;
   OutputSettings out_;
