@@ -12,8 +12,9 @@ namespace lbdem::dem {
 /// the trapezoidal rule over the powers at consecutive steps (second order; the velocity-Verlet
 /// energy error is of the same order, DESIGN §5); sliding and rolling losses are the energy the cap
 /// removed from the springs in the step; stiffness-change energy is booked apart.
+template <bool kRolling>
 inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, const ContactGeometry& g,
-                 double time, double dt) {
+                 double time, double dt, bool extremes) {
   const std::uint8_t old = state;
   const bool touch = g.delta > 0;
   std::uint8_t st = 0;
@@ -33,9 +34,11 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, co
     t.p_normal_damping = c.p_normal_damping;
     t.p_tangential_damping = c.p_tangential_damping;
     t.e_sliding += c.e_sliding;
-    t.e_rolling += c.e_rolling;
-    t.max_overlap = std::max(t.max_overlap, g.delta);
-    t.max_force = std::max(t.max_force, c.fn);
+    if constexpr (kRolling) t.e_rolling += c.e_rolling;
+    if (extremes) {  // only the opt-in per-contact rows report them
+      t.max_overlap = std::max(t.max_overlap, g.delta);
+      t.max_force = std::max(t.max_force, c.fn);
+    }
     st |= kTouching | kInteracting;
   } else if (old & kTouching) {
     t.e_normal_damping += 0.5 * dt * t.p_normal_damping;
@@ -43,7 +46,7 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, co
     t.p_normal_damping = t.p_tangential_damping = 0;
     st |= kEnded;
   }
-  if (c.force.squaredNorm() > 0) st |= kInteracting;
+  if (!touch && c.force.squaredNorm() > 0) st |= kInteracting;
   t.e_stiffness += c.e_stiffness;
   t.u_elastic = c.u_elastic;
   state = st;
@@ -51,6 +54,7 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, co
 
 // The kernels are flattened: GCC otherwise leaves Eigen's small 3-vector operations as calls in
 // these large bodies (measured: about a third of the pair pass in call overhead).
+
 /// Velocities predicted to the end of the step, v + dt/2 F_old/m (computed once per particle).
 struct Predicted {
   const std::vector<Vec3>& v;
@@ -89,7 +93,7 @@ template <class Table>
     const Vec3 tc = g.n.cross(c.ft);
     pl.torque_i[k] = ai * tc + c.m_roll;
     pl.torque_j[k] = aj * tc - c.m_roll;
-    book(pl.tally[k], pl.state[k], c, g, time, dt);
+    book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
 }
 
 template <class Table>
@@ -118,7 +122,7 @@ template <class Law, class Params>
 void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, const Vec3& vk,
                   const Vec3& wk, const Vec3& vh, const Vec3& wh, const Vec3& n, double dist, const Vec3& wall_velocity,
                   const Vec3& origin, WallContactList& wc, std::size_t e, double time, double dt,
-                  Vec3& f, Vec3& tq) {
+                  bool rows, Vec3& f, Vec3& tq) {
   ContactGeometry g;
   g.n = n;
   g.delta = p.radius[k] - dist;
@@ -140,7 +144,7 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
   // (it needs the wall's spin, and mu_r is small).
   wc.wall_torque[e] = (point - origin).cross(-c.force) - c.m_roll;
   wc.power[e] = c.force.dot(wall_velocity);
-  book(wc.tally[e], wc.state[e], c, g, time, dt);
+  book<Law::Rolling::active>(wc.tally[e], wc.state[e], c, g, time, dt, rows);
 }
 
 template <class Table>
@@ -193,18 +197,18 @@ template <class Table>
           const double dist = std::sqrt(hits[m].closest.dist2);
           wall_contact<Law>(prm, p, k, vk, wk, vh, wh, d / dist, dist,
                             mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin, wc,
-                            q, time, dt, f, tq);
+                            q, time, dt, s.collisions.rows, f, tq);
         }
         for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
           if (!kept_entry[q - e] && wc.state[q])
             wall_contact<Law>(prm, p, k, vk, wk, vh, wh, Vec3::UnitZ(), 1e300, Vec3::Zero(), w.torque_origin,
-                              wc, q, time, dt, f, tq);
+                              wc, q, time, dt, s.collisions.rows, f, tq);
         e = e1;
       } else {
         const WallPoint wp = analytic_wall_point(w, p.x[k], time);
         if (p.radius[k] - wp.dist > -range || wc.state[e])
           wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
-                            w.torque_origin, wc, e, time, dt, f, tq);
+                            w.torque_origin, wc, e, time, dt, s.collisions.rows, f, tq);
         ++e;
       }
     }
