@@ -1,9 +1,5 @@
 // lbdem-cli: parse the command line (CLI11), read the TOML, build the scenario, run it.
-#include <omp.h>
-
 #include <CLI/CLI.hpp>
-#include <cstdlib>
-#include <filesystem>
 #include <iostream>
 
 #include "core/error.hpp"
@@ -28,7 +24,12 @@ int main(int argc, char** argv) {
   bool study_list = false;
   study->add_option("name", study_name, "study name (see --list)");
   study->add_flag("--list", study_list, "list the studies");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints help or the error
+    return rc == 0 ? 0 : lbdem::kInputErrorExit;
+  }
   try {
     if (*study) return run_study(study_name, study_list);
     return run_scenario(opt);

@@ -112,6 +112,10 @@ int run_scenario(const RunOptions& opt) {
   int rc = 0;
   try {
     rc = scenario.run(ctx);
+  } catch (const Interrupted& e) {
+    write_file_atomic(dir + "/status", "stopped (resume with ./lbdem run --resume " + dir + ")\n");
+    log.line(std::string(e.what()) + "; resume with ./lbdem run --resume " + dir);
+    return 130;
   } catch (...) {
     write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
     throw;

@@ -1,6 +1,7 @@
 #include "scenarios/common/dem_driver.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -13,6 +14,13 @@
 namespace lbdem::scenarios {
 
 namespace fs = std::filesystem;
+
+namespace {
+// Set by SIGINT/SIGTERM: the loop then writes a checkpoint at the current step and stops, so an
+// interrupted run loses nothing and resumes exactly.
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+}  // namespace
 
 
 OutputSettings OutputSettings::from(const Config& run, const Config& out) {
@@ -43,11 +51,15 @@ const std::vector<std::string> kColumns = {
     "potential_energy_J", "elastic_energy_J", "dissipated_normal_damping_J", "dissipated_tangential_damping_J",
     "dissipated_sliding_J", "dissipated_rolling_J", "stiffness_change_J", "wall_work_J",
     "energy_injected_J", "energy_balance_error_J", "contacts_pp", "contacts_pw", "collisions_pp",
-    "collisions_pw", "mass_removed_kg", "neighbour_rebuilds"};
+    "collisions_pw", "collision_rate_pp_per_s", "collision_rate_pw_per_s", "mass_removed_kg",
+    "neighbour_rebuilds"};
 }  // namespace
 
-void DemDriver::write_row(double stored0) {
+void DemDriver::write_row(double stored0, bool regular) {
   const auto e = solver_.energy();
+  // Collisions begun per second since the previous row.
+  const double span = solver_.time() - prev_t_;
+  const auto rate = [&](std::int64_t now, std::int64_t prev) { return span > 0 ? double(now - prev) / span : 0.0; };
   const double injected = e.injected(stored0);
   std::vector<double> row = {solver_.time(),
                              double(solver_.particles().size()),
@@ -68,6 +80,8 @@ void DemDriver::write_row(double stored0) {
                              double(solver_.contacts_pw()),
                              double(solver_.collisions().started_pp()),
                              double(solver_.collisions().started_pw()),
+                             rate(solver_.collisions().started_pp(), prev_pp_),
+                             rate(solver_.collisions().started_pw(), prev_pw_),
                              solver_.mass_removed(),
                              double(solver_.rebuilds())};
   if (hooks_.extra_values) {
@@ -75,6 +89,10 @@ void DemDriver::write_row(double stored0) {
     row.insert(row.end(), extra.begin(), extra.end());
   }
   ts_.row(row);
+  if (!regular) return;  // an end-of-run row does not start a new rate interval (see resume)
+  prev_t_ = solver_.time();
+  prev_pp_ = solver_.collisions().started_pp();
+  prev_pw_ = solver_.collisions().started_pw();
 }
 
 void DemDriver::write_snapshot(const std::string& dir) {
@@ -141,6 +159,7 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
   std::vector<double> snaps = snapshot_times_;
   if (extra_snapshot_ && !snaps.empty()) snaps.pop_back();
   f.write("/snapshot_times_s", snaps);
+  f.write("/rate_reference", std::vector<double>{prev_t_, double(prev_pp_), double(prev_pw_)});
   solver_.save(f);
   if (hooks_.save) hooks_.save(f);
   f.commit();
@@ -159,6 +178,8 @@ int DemDriver::run(const RunContext& ctx) {
     solver_.load(f);
     if (hooks_.load) hooks_.load(f);
     ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
+    const auto prev = f.doubles("/rate_reference");
+    prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
     ctx.log->line("resumed from " + ckpt + " at t = " + to_text(solver_.time()) + " s (step " +
                   std::to_string(solver_.steps()) + ")");
   } else {
@@ -170,7 +191,20 @@ int DemDriver::run(const RunContext& ctx) {
   }
   Progress progress(out_.end_time, "particle-steps");
   double work = 0;
+  g_stop_signal = 0;
+  auto old_int = std::signal(SIGINT, on_stop_signal);
+  auto old_term = std::signal(SIGTERM, on_stop_signal);
   while (solver_.steps() < last_step_) {
+    if (g_stop_signal) {
+      extra_row_ = extra_snapshot_ = false;
+      write_checkpoint(ctx.dir, stored0);
+      solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
+      progress.finish();
+      std::signal(SIGINT, old_int);
+      std::signal(SIGTERM, old_term);
+      throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) + " at t = " +
+                        to_text(solver_.time()) + " s; checkpoint written");
+    }
     if (hooks_.before_step) hooks_.before_step(solver_);
     solver_.step();
     work += double(solver_.particles().size());
@@ -180,7 +214,7 @@ int DemDriver::run(const RunContext& ctx) {
     // a resumed series equals an uninterrupted one.
     extra_row_ = last && s % every_row_ != 0;
     extra_snapshot_ = last && s % every_snapshot_ != 0;
-    if (s % every_row_ == 0 || last) write_row(stored0);
+    if (s % every_row_ == 0 || last) write_row(stored0, !extra_row_);
     if (s % every_snapshot_ == 0 || last) write_snapshot(ctx.dir);
     if ((every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last) {
       write_checkpoint(ctx.dir, stored0);
@@ -188,6 +222,8 @@ int DemDriver::run(const RunContext& ctx) {
     }
     progress.update(solver_.time(), work);
   }
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
   progress.update(solver_.time(), work, true);
   progress.finish();
   const auto e = solver_.energy();

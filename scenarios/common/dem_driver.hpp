@@ -4,6 +4,7 @@
 // start-up banner. Output and checkpoint instants are step counts, so a resumed run writes at the
 // same steps as one that never stopped.
 #include <functional>
+#include <stdexcept>
 #include <random>
 #include <string>
 #include <vector>
@@ -14,6 +15,11 @@
 #include "scenarios/common/run_context.hpp"
 
 namespace lbdem::scenarios {
+
+/// Thrown when SIGINT/SIGTERM stopped the loop after writing a checkpoint.
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 struct OutputSettings {
   double end_time = 1;             // [s]
@@ -39,7 +45,7 @@ class DemDriver {
   int run(const RunContext& ctx);
 
  private:
-  void write_row(double stored0);
+  void write_row(double stored0, bool regular = true);
   void write_snapshot(const std::string& dir);
   void write_checkpoint(const std::string& dir, double stored0) const;
 
@@ -49,6 +55,8 @@ class DemDriver {
   std::int64_t every_row_ = 1, every_snapshot_ = 1, every_checkpoint_ = 0, last_step_ = 0;
   std::vector<double> snapshot_times_;
   bool extra_row_ = false, extra_snapshot_ = false;
+  double prev_t_ = 0;
+  std::int64_t prev_pp_ = 0, prev_pw_ = 0;
   TimeSeries ts_;
 };
 

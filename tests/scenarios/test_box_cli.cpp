@@ -98,3 +98,32 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   fs::remove_all(full);
   fs::remove_all(part);
 }
+
+TEST_CASE("SIGTERM writes a checkpoint; the resumed run equals an uninterrupted one", "[scenarios][checkpoint][slow]") {
+  const std::string full = tmpdir("sig_full"), part = tmpdir("sig_part");
+  // Long enough (about 2 s) that the signal after 0.5 s lands in the middle of the run.
+  const std::string args = kSmall + " --set run.end_time=0.6 --set output.checkpoint_interval=0.6";
+  REQUIRE(cli("run box --out " + full + args).code == 0);
+  const std::string cmd = std::string(LBDEM_CLI) + " run box --out " + part + args +
+                          " --no-plots > /dev/null 2>&1 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; exit $?";
+  const int rc = std::system(cmd.c_str());  // /bin/sh: background job, signal, wait for its status
+  const Result r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ""};
+  std::string status;
+  if (FILE* f = std::fopen((part + "/status").c_str(), "r")) {
+    char buf[256] = {};
+    status = std::fgets(buf, sizeof buf, f) ? buf : "";
+    std::fclose(f);
+  }
+  INFO(r.err << " status: " << status);
+  REQUIRE(r.code == 130);
+  REQUIRE(status.rfind("stopped", 0) == 0);
+  REQUIRE(cli("run --resume " + part).code == 0);
+  const lbdem::H5In a(full + "/checkpoint.h5"), b(part + "/checkpoint.h5");
+  for (const char* set : {"/dem/x", "/dem/v", "/dem/omega"}) {
+    const auto va = a.doubles(set), vb = b.doubles(set);
+    REQUIRE(va.size() == vb.size());
+    CHECK(std::memcmp(va.data(), vb.data(), va.size() * sizeof(double)) == 0);
+  }
+  fs::remove_all(full);
+  fs::remove_all(part);
+}
