@@ -99,7 +99,7 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   fs::remove_all(part);
 }
 
-TEST_CASE("SIGTERM writes a checkpoint; the resumed run equals an uninterrupted one", "[scenarios][checkpoint][slow]") {
+TEST_CASE("SIGTERM writes a checkpoint and the resumed run equals an uninterrupted one", "[scenarios][checkpoint][slow]") {
   const std::string full = tmpdir("sig_full"), part = tmpdir("sig_part");
   // Long enough (about 2 s) that the signal after 0.5 s lands in the middle of the run.
   const std::string args = kSmall + " --set run.end_time=0.6 --set output.checkpoint_interval=0.6";
