@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "dem/csr_build.hpp"
 #include "dem/dem_solver.hpp"
 
 namespace lbdem::dem {
@@ -145,24 +146,13 @@ void DemSolver::build_wall_list(const CellList& cells, double extra) {
       }
     }
   };
-  wc_.first.assign(n + 1, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t k = 0; k < n; ++k) {
-    std::uint32_t c = 0;
-    visit(k, [&](std::size_t, int) { ++c; });
-    wc_.first[k + 1] = c;
-  }
-  for (std::size_t k = 0; k < n; ++k) wc_.first[k + 1] += wc_.first[k];
-  wc_.resize(wc_.first[n]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t k = 0; k < n; ++k) {
-    std::uint32_t e = wc_.first[k];
-    visit(k, [&](std::size_t w, int t) {
-      wc_.particle[e] = static_cast<std::uint32_t>(k);
-      wc_.wall[e] = static_cast<std::uint16_t>(w);
-      wc_.tri[e++] = t;
-    });
-  }
+  build_rows(
+      n, wc_.first, visit, [&](std::size_t total) { wc_.resize(total); },
+      [&](std::uint32_t e, std::size_t k, std::size_t w, int t) {
+        wc_.particle[e] = static_cast<std::uint32_t>(k);
+        wc_.wall[e] = static_cast<std::uint16_t>(w);
+        wc_.tri[e] = t;
+      });
 }
 
 }  // namespace lbdem::dem

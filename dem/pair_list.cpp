@@ -1,5 +1,7 @@
 #include "dem/pair_list.hpp"
 
+#include "dem/csr_build.hpp"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -94,24 +96,19 @@ void for_neighbours(std::uint32_t p, const std::vector<Vec3>& x, const std::vect
 void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const Domain& d,
                  const CellList& cells, double extra, PairList& out) {
   const std::size_t np = x.size();
-  out.first.assign(np + 1, 0);
+  build_rows(
+      np, out.first,
+      [&](std::size_t p, auto&& emit) {
+        for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra, [&](std::uint32_t q) { emit(q); });
+      },
+      [&](std::size_t total) { out.resize(total); },
+      [&](std::uint32_t slot, std::size_t p, std::uint32_t q) {
+        out.i[slot] = static_cast<std::uint32_t>(p);
+        out.j[slot] = q;
+      });
+  // Each particle's partners ascending: carry_over() finds pairs by binary search.
 #pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t p = 0; p < np; ++p) {
-    std::uint32_t n = 0;
-    for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra, [&](std::uint32_t) { ++n; });
-    out.first[p + 1] = n;
-  }
-  for (std::size_t p = 0; p < np; ++p) out.first[p + 1] += out.first[p];
-  out.resize(out.first[np]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t p = 0; p < np; ++p) {
-    std::uint32_t k = out.first[p];
-    for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra, [&](std::uint32_t q) {
-      out.i[k] = static_cast<std::uint32_t>(p);
-      out.j[k++] = q;
-    });
-    std::sort(out.j.begin() + out.first[p], out.j.begin() + out.first[p + 1]);
-  }
+  for (std::size_t p = 0; p < np; ++p) std::sort(out.j.begin() + out.first[p], out.j.begin() + out.first[p + 1]);
   out.build_transpose(np);
 }
 
