@@ -21,18 +21,12 @@ double RadiusDistribution::sample(std::mt19937_64& rng) const {
   return radius;
 }
 
-double RadiusDistribution::mean_volume() const {
-  const double c = 4.0 / 3.0 * kPi;
-  if (kind == "uniform") return c * (std::pow(max, 4) - std::pow(min, 4)) / (4 * (max - min));
-  if (kind == "lognormal") return c * std::pow(median, 3) * std::exp(4.5 * sigma * sigma);  // unclipped
-  return c * radius * radius * radius;
-}
-
 std::vector<Placed> random_fill(const FillRequest& req, const std::vector<Placed>& existing,
                                 std::mt19937_64& rng) {
-  const double rmax = req.radius.largest();
+  double rmax = req.radius.largest();
+  for (const auto& e : existing) rmax = std::max(rmax, e.r);
   const double h = 2 * rmax;
-  // Hash grid of everything placed so far, cell 2 r_max: overlap checks look at 27 cells.
+  // Hash grid of everything placed so far, cell 2 r_max (of old and new): overlap checks look at 27 cells.
   std::unordered_map<std::int64_t, std::vector<int>> grid;
   std::vector<Placed> all = existing;
   const auto key = [&](const Vec3& x) {

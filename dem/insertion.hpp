@@ -21,7 +21,6 @@ struct RadiusDistribution {
   double largest() const { return kind == "fixed" ? radius : max; }
   double smallest() const { return kind == "fixed" ? radius : min; }
   double sample(std::mt19937_64& rng) const;
-  double mean_volume() const;  // <4/3 pi r^3> [m^3], for mass targets
 };
 
 double uniform01(std::mt19937_64& rng);
