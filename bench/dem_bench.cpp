@@ -86,7 +86,8 @@ int main(int argc, char** argv) {
   const int nz = n / 2500;
   if (steps <= 0) steps = n <= 20000 ? 5000 : 1000;
   std::filesystem::create_directories(cache);
-  const std::string bed = cache + "/bed_N" + std::to_string(n) + "_settle" + std::to_string(settle) + ".h5";
+  const std::string bed = cache + "/bed_N" + std::to_string(n) + "_settle" + std::to_string(settle) + "_layout" +
+                          std::to_string(dem::DemSolver::kCheckpointLayout) + ".h5";
   if (!std::filesystem::exists(bed)) {
     std::fprintf(stderr, "settling N=%d: %d steps of 1e-5 s (cached in %s) ...\n", n, settle, bed.c_str());
     auto sol = make_bed(nz, 1e-5);

@@ -15,6 +15,7 @@ if(LBDEM_SANITIZE)
   target_compile_options(lbdem_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
                                                -fno-sanitize-recover=undefined)
   target_link_options(lbdem_flags INTERFACE -fsanitize=address,undefined)
+  target_compile_definitions(lbdem_flags INTERFACE LBDEM_NO_FLATTEN)
   # GCC documents that -fsanitize makes -Wmaybe-uninitialized report false positives (seen in
   # libstdc++'s <regex> through Catch2); the Release build keeps the warning.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")

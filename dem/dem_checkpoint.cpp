@@ -1,6 +1,7 @@
 // Checkpoint of the complete DEM state: a resumed run continues bitwise as if it had never stopped,
 // so everything that influences later steps is saved, the neighbour lists included.
 #include <cstring>
+#include <stdexcept>
 
 #include "core/h5.hpp"
 #include "dem/dem_solver.hpp"
@@ -8,7 +9,8 @@
 namespace lbdem::dem {
 
 namespace {
-static_assert(sizeof(ContactHistory) % sizeof(double) == 0 && sizeof(ContactTally) % sizeof(double) == 0);
+// Both are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
+static_assert(sizeof(ContactHistory) == 8 * sizeof(double) && sizeof(ContactTally) == 13 * sizeof(double));
 
 template <class T>
 std::vector<double> flatten(const std::vector<T>& v) {
@@ -30,6 +32,7 @@ std::vector<B> cast(const std::vector<A>& a) {
 
 void DemSolver::save(H5Out& f) const {
   f.group("/dem");
+  f.attr("layout_version", std::int64_t(kCheckpointLayout), "/dem");
   f.attr("time_s", t_, "/dem");
   f.attr("step", step_, "/dem");
   f.attr("rebuilds", rebuilds_, "/dem");
@@ -71,6 +74,9 @@ void DemSolver::save(H5Out& f) const {
 }
 
 void DemSolver::load(const H5In& f) {
+  if (!f.has("/dem") || f.attr_int("layout_version", "/dem") != kCheckpointLayout)
+    throw std::runtime_error("checkpoint written by an incompatible lbdem build (layout " +
+                             std::to_string(kCheckpointLayout) + " expected); rerun from the start");
   t_ = f.attr_double("time_s", "/dem");
   step_ = f.attr_int("step", "/dem");
   rebuilds_ = f.attr_int("rebuilds", "/dem");
@@ -99,6 +105,8 @@ void DemSolver::load(const H5In& f) {
   pairs_.history = unflatten<ContactHistory>(f.doubles("/dem/pairs_history"));
   pairs_.tally = unflatten<ContactTally>(f.doubles("/dem/pairs_tally"));
   pairs_.state = f.uint8s("/dem/pairs_state");
+  if (pairs_.history.size() != pi.size() || pairs_.tally.size() != pi.size() || pairs_.state.size() != pi.size())
+    throw std::runtime_error("checkpoint is inconsistent: pair arrays differ in length");
   pairs_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_first"));
   pairs_.build_transpose(p_.size());
   const auto wp = f.int64s("/dem/wc_particle");
@@ -109,6 +117,8 @@ void DemSolver::load(const H5In& f) {
   wc_.history = unflatten<ContactHistory>(f.doubles("/dem/wc_history"));
   wc_.tally = unflatten<ContactTally>(f.doubles("/dem/wc_tally"));
   wc_.state = f.uint8s("/dem/wc_state");
+  if (wc_.history.size() != wp.size() || wc_.tally.size() != wp.size() || wc_.state.size() != wp.size())
+    throw std::runtime_error("checkpoint is inconsistent: wall-contact arrays differ in length");
   wc_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/wc_first"));
   wall_ref_.assign(walls_.size(), {});
   for (std::size_t w = 0; w < walls_.size(); ++w) {

@@ -53,7 +53,13 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, co
 }
 
 // The kernels are flattened: GCC otherwise leaves Eigen's small 3-vector operations as calls in
-// these large bodies (measured: about a third of the pair pass in call overhead).
+// these large bodies (measured: about a third of the pair pass in call overhead). Sanitizer builds
+// skip it: flattened and instrumented, the twelve law instantiations take many minutes to compile.
+#ifdef LBDEM_NO_FLATTEN
+#define LBDEM_FLATTEN
+#else
+#define LBDEM_FLATTEN [[gnu::flatten]]
+#endif
 
 /// Velocities predicted to the end of the step, v + dt/2 F_old/m (computed once per particle).
 struct Predicted {
@@ -62,7 +68,7 @@ struct Predicted {
 };
 
 template <class Table>
-[[gnu::flatten]] inline void pair_kernel(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p, const Predicted& pr,
                                          const DemSettings& s, PairList& pl, double time, std::size_t k,
                                          const Vec3& d, double r2) {
   using Law = typename Table::law_type;
@@ -148,7 +154,7 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
 }
 
 template <class Table>
-[[gnu::flatten]] inline void particle_kernel(const Table& tab, ParticleArrays& p, const Predicted& pr,
+LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, const Predicted& pr,
                                              const DemSettings& s, const std::vector<Wall>& walls,
                                              const PairList& pl, WallContactList& wc, double time,
                                              std::size_t k) {

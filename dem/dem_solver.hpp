@@ -90,6 +90,8 @@ class DemSolver {
   CollisionStats& collisions() { return stats_; }
   double interaction_range() const;  // largest distance beyond touch at which the law acts [m]
 
+  /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs change).
+  static constexpr int kCheckpointLayout = 2;
   void save(H5Out& out) const;
   void load(const H5In& in);
 

@@ -11,17 +11,19 @@
 namespace lbdem::dem {
 
 /// Accounting of the contact a pair is in now: energies dissipated since it began [J], the powers of
-/// the last step [W] (trapezoidal integration) and the impact record.
+/// the last step [W] (trapezoidal integration) and the impact record. The fields every step updates
+/// come first. (Aligning the struct to a cache line was measured: no gain on the bench bed.)
 struct ContactTally {
-  double e_normal_damping = 0, e_tangential_damping = 0, e_sliding = 0, e_rolling = 0;
+  double e_normal_damping = 0, e_tangential_damping = 0;
   double p_normal_damping = 0, p_tangential_damping = 0;
+  double e_sliding = 0, e_rolling = 0;
+  double e_stiffness = 0;  // spring energy entered by stiffness change (see contact_law.hpp) [J]
+  double u_elastic = 0;    // energy stored in the contact now [J]
   double t_start = 0;      // [s]
   double vn_impact = 0;    // normal approach speed at first touch [m/s]
   double vt_impact = 0;    // tangential speed at first touch [m/s]
   double max_overlap = 0;  // [m]
   double max_force = 0;    // largest normal contact force [N]
-  double e_stiffness = 0;  // spring energy entered by stiffness change (see contact_law.hpp) [J]
-  double u_elastic = 0;    // energy stored in the contact now [J]
 
   double dissipated() const { return e_normal_damping + e_tangential_damping + e_sliding + e_rolling; }
 };
