@@ -1,5 +1,5 @@
-// DEM benchmark: the settled Hertz-Mindlin bed of ../shared/bench (case 2), same particles, material,
-// walls, time steps, skin and step counts as the LIGGGHTS and LAMMPS inputs there:
+// DEM benchmark: the settled Hertz-Mindlin bed of ../shared/bench (case 2), same particles,
+// material, walls, time steps, skin and step counts as the LIGGGHTS and LAMMPS inputs there:
 //   d = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, simple-cubic lattice a = 1.05 mm,
 //   50 x 50 x NZ sites, v = 0.05 sin(k.x) m/s, 5 walls, gravity; settle 20,000 steps of 1e-5 s
 //   (untimed, cached), then 500 untimed + NSTEPS timed steps of 1e-6 s.
@@ -86,10 +86,12 @@ int main(int argc, char** argv) {
   const int nz = n / 2500;
   if (steps <= 0) steps = n <= 20000 ? 5000 : 1000;
   std::filesystem::create_directories(cache);
-  const std::string bed = cache + "/bed_N" + std::to_string(n) + "_settle" + std::to_string(settle) + "_layout" +
+  const std::string bed = cache + "/bed_N" + std::to_string(n) + "_settle" +
+                          std::to_string(settle) + "_layout" +
                           std::to_string(dem::DemSolver::kCheckpointLayout) + ".h5";
   if (!std::filesystem::exists(bed)) {
-    std::fprintf(stderr, "settling N=%d: %d steps of 1e-5 s (cached in %s) ...\n", n, settle, bed.c_str());
+    std::fprintf(stderr, "settling N=%d: %d steps of 1e-5 s (cached in %s) ...\n", n, settle,
+                 bed.c_str());
     auto sol = make_bed(nz, 1e-5);
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < settle; ++k) sol.step();
@@ -110,8 +112,9 @@ int main(int argc, char** argv) {
     const double loop = seconds_since(t0);
     const double z = 2.0 * double(sol.contacts_pp()) / double(sol.particles().size());
     std::printf("%-10s %-44s %5d %14.4g  %-18s loop_s=%.3f rebuilds_in_window=%lld\n", "lbdem",
-                ("Hertz-Mindlin bed N=" + std::to_string(n) + ", dt=1e-6, " + std::to_string(steps) +
-                 " st, Z=" + std::to_string(z).substr(0, 4)).c_str(),
+                ("Hertz-Mindlin bed N=" + std::to_string(n) + ", dt=1e-6, " +
+                 std::to_string(steps) + " st, Z=" + std::to_string(z).substr(0, 4))
+                    .c_str(),
                 t, double(sol.particles().size()) * steps / loop, "particle-steps/s", loop,
                 static_cast<long long>(sol.rebuilds() - rebuilds0));
     std::fflush(stdout);

@@ -75,7 +75,8 @@ std::string describe(const toml::node& n) {
 void collect_unknown(const toml::table& t, const std::string& prefix,
                      const std::set<std::string>& known, std::vector<std::string>& out) {
   for (auto&& [k, v] : t) {
-    const std::string p = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const std::string p =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (auto* sub = v.as_table()) {
       collect_unknown(*sub, p, known, out);
     } else if (auto* arr = v.as_array(); arr && arr->is_array_of_tables() && !arr->empty()) {
@@ -186,7 +187,9 @@ const toml::node* Config::find(std::string_view key) const {
   return v.node();
 }
 
-bool Config::has(std::string_view key) const { return find(key) != nullptr; }
+bool Config::has(std::string_view key) const {
+  return find(key) != nullptr;
+}
 
 void Config::record(std::string_view key, toml::node&& value_if_absent) const {
   const std::string p = path(key);
@@ -197,7 +200,9 @@ void Config::record(std::string_view key, toml::node&& value_if_absent) const {
     parent->insert(parts.back(), std::move(value_if_absent));
 }
 
-Config Config::section(std::string_view key) const { return Config(s_, path(key)); }
+Config Config::section(std::string_view key) const {
+  return Config(s_, path(key));
+}
 
 std::vector<Config> Config::table_array(std::string_view key) const {
   std::vector<Config> out;
@@ -218,7 +223,8 @@ void Config::check_range(std::string_view key, double v, const Range& r) const {
   if (!std::isfinite(v) || lo_bad || hi_bad) {
     std::string want;
     if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
-    if (std::isfinite(r.hi)) want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
+    if (std::isfinite(r.hi))
+      want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
     throw InputError(path(key), to_text(v), "must be " + (want.empty() ? "finite" : want),
                      r.fix.empty() ? "give a value in that range" : std::string(r.fix));
   }
@@ -308,11 +314,15 @@ std::vector<double> Config::get_list(std::string_view key, const std::vector<dou
   std::vector<double> v = def;
   if (n) {
     const auto* arr = n->as_array();
-    if (!arr) throw InputError(path(key), describe(*n), "expected an array of numbers", "write [a, b, ...]");
+    if (!arr)
+      throw InputError(path(key), describe(*n), "expected an array of numbers",
+                       "write [a, b, ...]");
     v.clear();
     for (const auto& e : *arr) {
       auto x = e.value<double>();
-      if (!x) throw InputError(path(key), describe(*n), "expected an array of numbers", "write [a, b, ...]");
+      if (!x)
+        throw InputError(path(key), describe(*n), "expected an array of numbers",
+                         "write [a, b, ...]");
       v.push_back(*x);
     }
   }
@@ -327,7 +337,8 @@ Vec3 Config::get_vec3(std::string_view key, const Vec3& def) const {
   if (v.size() != 3) {
     std::string text = "[";
     for (std::size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + to_text(v[i]);
-    throw InputError(path(key), text + "]", "expected three numbers [x, y, z]", "write [x, y, z] in SI units");
+    throw InputError(path(key), text + "]", "expected three numbers [x, y, z]",
+                     "write [x, y, z] in SI units");
   }
   return {v[0], v[1], v[2]};
 }

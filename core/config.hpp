@@ -2,8 +2,8 @@
 // Typed, range-checked access to a TOML run description (toml++).
 //
 // Every key a scenario reads is recorded together with the value it resolved to (the default where
-// the file is silent), so that (1) the run folder gets the fully resolved config.toml and (2) any key
-// in the input that nobody read is reported as unknown, with the nearest known key as a hint.
+// the file is silent), so that (1) the run folder gets the fully resolved config.toml and (2) any
+// key in the input that nobody read is reported as unknown, with the nearest known key as a hint.
 #include "core/types.hpp"
 
 #include <toml++/toml.h>
@@ -26,9 +26,15 @@ struct Range {
   bool hi_open = false;
   std::string_view fix = {};
 
-  static Range positive(std::string_view fix = "give a value > 0") { return {0, kInf, true, false, fix}; }
-  static Range non_negative(std::string_view fix = "give a value >= 0") { return {0, kInf, false, false, fix}; }
-  static Range closed(double lo, double hi, std::string_view fix = {}) { return {lo, hi, false, false, fix}; }
+  static Range positive(std::string_view fix = "give a value > 0") {
+    return {0, kInf, true, false, fix};
+  }
+  static Range non_negative(std::string_view fix = "give a value >= 0") {
+    return {0, kInf, false, false, fix};
+  }
+  static Range closed(double lo, double hi, std::string_view fix = {}) {
+    return {lo, hi, false, false, fix};
+  }
   static constexpr double kInf = std::numeric_limits<double>::infinity();
 };
 
@@ -68,7 +74,8 @@ class Config {
 
  private:
   struct State;
-  Config(std::shared_ptr<State> s, std::string prefix) : s_(std::move(s)), prefix_(std::move(prefix)) {}
+  Config(std::shared_ptr<State> s, std::string prefix)
+      : s_(std::move(s)), prefix_(std::move(prefix)) {}
   const toml::node* find(std::string_view key) const;
   void record(std::string_view key, toml::node&& value_if_absent) const;
   void check_range(std::string_view key, double v, const Range& r) const;

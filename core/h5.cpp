@@ -114,8 +114,10 @@ void H5Out::attr(const std::string& name, const std::string& v, const std::strin
   H5Tclose(type);
 }
 
-void H5Out::external_link(const std::string& name, const std::string& file, const std::string& object) {
-  check(H5Lcreate_external(file.c_str(), object.c_str(), file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+void H5Out::external_link(const std::string& name, const std::string& file,
+                          const std::string& object) {
+  check(H5Lcreate_external(file.c_str(), object.c_str(), file_, name.c_str(), H5P_DEFAULT,
+                           H5P_DEFAULT),
         "external link " + name);
 }
 

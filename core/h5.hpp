@@ -26,7 +26,8 @@ class H5Out {
   void write_matrix(const std::string& name, const std::vector<double>& v, std::size_t rows,
                     std::size_t cols);
   /// Row-major array of any rank (last dimension fastest).
-  void write_array(const std::string& name, const std::vector<double>& v, const std::vector<std::size_t>& dims);
+  void write_array(const std::string& name, const std::vector<double>& v,
+                   const std::vector<std::size_t>& dims);
   void attr(const std::string& name, double v, const std::string& object = "/");
   void attr(const std::string& name, std::int64_t v, const std::string& object = "/");
   void attr(const std::string& name, const std::string& v, const std::string& object = "/");
@@ -35,7 +36,8 @@ class H5Out {
   void commit();
 
  private:
-  void write_raw(const std::string& name, hid_t type, const void* data, int rank, const hsize_t* dims);
+  void write_raw(const std::string& name, hid_t type, const void* data, int rank,
+                 const hsize_t* dims);
   std::string path_, tmp_;
   hid_t file_ = -1;
 };
@@ -58,7 +60,8 @@ class H5In {
   std::string attr_string(const std::string& name, const std::string& object = "/") const;
 
  private:
-  std::size_t read_raw(const std::string& name, hid_t type, std::vector<char>& out, std::size_t elem) const;
+  std::size_t read_raw(const std::string& name, hid_t type, std::vector<char>& out,
+                       std::size_t elem) const;
   std::string path_;
   hid_t file_ = -1;
 };

@@ -8,7 +8,7 @@
 namespace lbdem::dem {
 
 namespace {
-constexpr int kBins = 60;             // log-spaced impact speed bins
+constexpr int kBins = 60;                    // log-spaced impact speed bins
 constexpr double kVmin = 1e-5, kVmax = 1e3;  // [m/s]: covers settling creep to jet-mill impacts
 }  // namespace
 
@@ -79,12 +79,14 @@ void CollisionStats::write(const std::string& path, double time) const {
   f.group("/grid");
   std::vector<double> counts(grid_count_.begin(), grid_count_.end());
   // x varies fastest in the cell index, so the HDF5 shape is (nz, ny, nx).
-  const std::vector<std::size_t> shape = {std::size_t(grid_.n[2]), std::size_t(grid_.n[1]), std::size_t(grid_.n[0])};
+  const std::vector<std::size_t> shape = {std::size_t(grid_.n[2]), std::size_t(grid_.n[1]),
+                                          std::size_t(grid_.n[0])};
   f.write_array("/grid/counts", counts, shape);
   f.write_array("/grid/dissipated_J", grid_energy_, shape);
   f.attr("axis_order", std::string("zyx"), "/grid");
   std::vector<double> lo = {grid_.lo[0], grid_.lo[1], grid_.lo[2]};
-  std::vector<double> hi = {grid_.lo[0] + grid_.n[0] / grid_.inv_h[0], grid_.lo[1] + grid_.n[1] / grid_.inv_h[1],
+  std::vector<double> hi = {grid_.lo[0] + grid_.n[0] / grid_.inv_h[0],
+                            grid_.lo[1] + grid_.n[1] / grid_.inv_h[1],
                             grid_.lo[2] + grid_.n[2] / grid_.inv_h[2]};
   f.write("/grid/lo_m", lo);
   f.write("/grid/hi_m", hi);
@@ -102,7 +104,8 @@ void CollisionStats::write(const std::string& path, double time) const {
       f.write("/rows/id_i", col([](const CollisionRow& r) { return r.id_i; }));
       f.write("/rows/id_j", col([](const CollisionRow& r) { return r.id_j; }));
       f.write("/rows/impact_normal_speed_m_per_s", col([](const CollisionRow& r) { return r.vn; }));
-      f.write("/rows/impact_tangential_speed_m_per_s", col([](const CollisionRow& r) { return r.vt; }));
+      f.write("/rows/impact_tangential_speed_m_per_s",
+              col([](const CollisionRow& r) { return r.vt; }));
       f.write("/rows/max_overlap_m", col([](const CollisionRow& r) { return r.max_overlap; }));
       f.write("/rows/max_normal_force_N", col([](const CollisionRow& r) { return r.max_force; }));
       f.write("/rows/dissipated_J", col([](const CollisionRow& r) { return r.dissipated; }));

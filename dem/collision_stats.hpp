@@ -1,8 +1,8 @@
 #pragma once
-// Collision statistics, always on and aggregated (counts, impact-speed histograms, energy dissipated
-// by mechanism, over time and on a coarse spatial grid), plus, opt-in within a time window and a row
-// budget, one row per contact for collisions.h5. A dense bed makes 1e8 contacts in a few hundredths
-// of a second, so raw rows are never written unasked (DESIGN §5).
+// Collision statistics, always on and aggregated (counts, impact-speed histograms, energy
+// dissipated by mechanism, over time and on a coarse spatial grid), plus, opt-in within a time
+// window and a row budget, one row per contact for collisions.h5. A dense bed makes 1e8 contacts in
+// a few hundredths of a second, so raw rows are never written unasked (DESIGN §5).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,7 +40,8 @@ class CollisionStats {
   std::int64_t started_pp() const { return started_[0]; }
   std::int64_t started_pw() const { return started_[1]; }
   std::int64_t rows_dropped() const { return rows_dropped_; }
-  /// Energies of finished contacts by mechanism [J]: normal damping, tangential damping, sliding, rolling.
+  /// Energies of finished contacts by mechanism [J]: normal damping, tangential damping, sliding,
+  /// rolling.
   const double* closed_energy() const { return closed_; }
   void add_closed(const ContactTally& t);
 

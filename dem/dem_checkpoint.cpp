@@ -10,7 +10,8 @@ namespace lbdem::dem {
 
 namespace {
 // Both are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
-static_assert(sizeof(ContactHistory) == 8 * sizeof(double) && sizeof(ContactTally) == 13 * sizeof(double));
+static_assert(sizeof(ContactHistory) == 8 * sizeof(double) &&
+              sizeof(ContactTally) == 13 * sizeof(double));
 
 template <class T>
 std::vector<double> flatten(const std::vector<T>& v) {
@@ -39,8 +40,8 @@ void DemSolver::save(H5Out& f) const {
   f.attr("lost", lost_, "/dem");
   f.attr("next_id", next_id_, "/dem");
   f.attr("need_rebuild", std::int64_t(need_rebuild_), "/dem");
-  f.write("/dem/accounts", std::vector<double>{stiffness_closed_, wall_work_, wall_power_prev_, inserted_,
-                                               removed_, mass_removed_, max_radius_});
+  f.write("/dem/accounts", std::vector<double>{stiffness_closed_, wall_work_, wall_power_prev_,
+                                               inserted_, removed_, mass_removed_, max_radius_});
   f.write("/dem/x", p_.x);
   f.write("/dem/v", p_.v);
   f.write("/dem/omega", p_.omega);
@@ -66,9 +67,12 @@ void DemSolver::save(H5Out& f) const {
   f.write("/dem/wc_tally", flatten(wc_.tally));
   f.write("/dem/wc_state", wc_.state);
   f.write("/dem/wc_first", cast<std::uint32_t, std::int64_t>(wc_.first));
-  for (std::size_t w = 0; w < wall_ref_.size(); ++w) f.write("/dem/wall_ref" + std::to_string(w), wall_ref_[w]);
+  for (std::size_t w = 0; w < wall_ref_.size(); ++w)
+    f.write("/dem/wall_ref" + std::to_string(w), wall_ref_[w]);
   std::vector<double> loads;
-  for (const auto& w : walls_) loads.insert(loads.end(), {w.force[0], w.force[1], w.force[2], w.torque[0], w.torque[1], w.torque[2]});
+  for (const auto& w : walls_)
+    loads.insert(loads.end(),
+                 {w.force[0], w.force[1], w.force[2], w.torque[0], w.torque[1], w.torque[2]});
   f.write("/dem/wall_loads", loads);
   stats_.save(f, "/dem/collisions");
 }
@@ -76,7 +80,8 @@ void DemSolver::save(H5Out& f) const {
 void DemSolver::load(const H5In& f) {
   if (!f.has("/dem") || f.attr_int("layout_version", "/dem") != kCheckpointLayout)
     throw std::runtime_error("checkpoint written by an incompatible lbdem build (layout " +
-                             std::to_string(kCheckpointLayout) + " expected); rerun from the start");
+                             std::to_string(kCheckpointLayout) +
+                             " expected); rerun from the start");
   t_ = f.attr_double("time_s", "/dem");
   step_ = f.attr_int("step", "/dem");
   rebuilds_ = f.attr_int("rebuilds", "/dem");
@@ -105,7 +110,8 @@ void DemSolver::load(const H5In& f) {
   pairs_.history = unflatten<ContactHistory>(f.doubles("/dem/pairs_history"));
   pairs_.tally = unflatten<ContactTally>(f.doubles("/dem/pairs_tally"));
   pairs_.state = f.uint8s("/dem/pairs_state");
-  if (pairs_.history.size() != pi.size() || pairs_.tally.size() != pi.size() || pairs_.state.size() != pi.size())
+  if (pairs_.history.size() != pi.size() || pairs_.tally.size() != pi.size() ||
+      pairs_.state.size() != pi.size())
     throw std::runtime_error("checkpoint is inconsistent: pair arrays differ in length");
   pairs_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_first"));
   pairs_.build_transpose(p_.size());
@@ -117,7 +123,8 @@ void DemSolver::load(const H5In& f) {
   wc_.history = unflatten<ContactHistory>(f.doubles("/dem/wc_history"));
   wc_.tally = unflatten<ContactTally>(f.doubles("/dem/wc_tally"));
   wc_.state = f.uint8s("/dem/wc_state");
-  if (wc_.history.size() != wp.size() || wc_.tally.size() != wp.size() || wc_.state.size() != wp.size())
+  if (wc_.history.size() != wp.size() || wc_.tally.size() != wp.size() ||
+      wc_.state.size() != wp.size())
     throw std::runtime_error("checkpoint is inconsistent: wall-contact arrays differ in length");
   wc_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/wc_first"));
   wall_ref_.assign(walls_.size(), {});

@@ -13,8 +13,8 @@ namespace lbdem::dem {
 /// energy error is of the same order, DESIGN §5); sliding and rolling losses are the energy the cap
 /// removed from the springs in the step; stiffness-change energy is booked apart.
 template <bool kRolling>
-inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c, const ContactGeometry& g,
-                 double time, double dt, bool extremes) {
+inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c,
+                 const ContactGeometry& g, double time, double dt, bool extremes) {
   const std::uint8_t old = state;
   const bool touch = g.delta > 0;
   std::uint8_t st = 0;
@@ -68,43 +68,45 @@ struct Predicted {
 };
 
 template <class Table>
-LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p, const Predicted& pr,
-                                         const DemSettings& s, PairList& pl, double time, std::size_t k,
-                                         const Vec3& d, double r2) {
+LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
+                                      const Predicted& pr, const DemSettings& s, PairList& pl,
+                                      double time, std::size_t k, const Vec3& d, double r2) {
   using Law = typename Table::law_type;
   const double dt = s.dt;
-    const std::uint32_t i = pl.i[k], j = pl.j[k];
-    const double ri = p.radius[i], rj = p.radius[j], rs = ri + rj;
-    const double dist = std::sqrt(r2);
-    ContactGeometry g;
-    g.n = d / dist;
-    g.delta = rs - dist;
-    g.r_star = ri * rj / rs;
-    g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-    g.i_star = 0;  // read only by the constant-torque rolling model
-    if constexpr (Law::Rolling::active) g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
-    // Velocities predicted to the end of the step (see dem_solver.hpp).
-    const Vec3& vi = pr.v[i];
-    const Vec3& vj = pr.v[j];
-    const Vec3& wi = pr.w[i];
-    const Vec3& wj = pr.w[j];
-    const double half = 0.5 * std::max(g.delta, 0.0);
-    const double ai = ri - half, aj = rj - half;  // centre to contact point
-    g.v_rel = vi - vj + (ai * wi + aj * wj).cross(g.n);
-    g.w_rel = wi - wj;
-    g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
-    g.w_half = p.omega[i] - p.omega[j];
-    const ContactForce c = Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
-    pl.force[k] = c.force;
-    const Vec3 tc = g.n.cross(c.ft);
-    pl.torque_i[k] = ai * tc + c.m_roll;
-    pl.torque_j[k] = aj * tc - c.m_roll;
-    book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
+  const std::uint32_t i = pl.i[k], j = pl.j[k];
+  const double ri = p.radius[i], rj = p.radius[j], rs = ri + rj;
+  const double dist = std::sqrt(r2);
+  ContactGeometry g;
+  g.n = d / dist;
+  g.delta = rs - dist;
+  g.r_star = ri * rj / rs;
+  g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+  g.i_star = 0;  // read only by the constant-torque rolling model
+  if constexpr (Law::Rolling::active)
+    g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
+  // Velocities predicted to the end of the step (see dem_solver.hpp).
+  const Vec3& vi = pr.v[i];
+  const Vec3& vj = pr.v[j];
+  const Vec3& wi = pr.w[i];
+  const Vec3& wj = pr.w[j];
+  const double half = 0.5 * std::max(g.delta, 0.0);
+  const double ai = ri - half, aj = rj - half;  // centre to contact point
+  g.v_rel = vi - vj + (ai * wi + aj * wj).cross(g.n);
+  g.w_rel = wi - wj;
+  g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
+  g.w_half = p.omega[i] - p.omega[j];
+  const ContactForce c =
+      Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
+  pl.force[k] = c.force;
+  const Vec3 tc = g.n.cross(c.ft);
+  pl.torque_i[k] = ai * tc + c.m_roll;
+  pl.torque_j[k] = aj * tc - c.m_roll;
+  book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
 }
 
 template <class Table>
-void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr, const DemSettings& s,
-                   PairList& pl, double time) {
+void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+                   const DemSettings& s, PairList& pl, double time) {
   const std::size_t np = pl.size();
   const double range = tab.range;
   const Domain& dom = s.domain;
@@ -126,9 +128,9 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& p
 /// Contact of particle k with wall entry e, given where the wall is seen from the centre.
 template <class Law, class Params>
 void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, const Vec3& vk,
-                  const Vec3& wk, const Vec3& vh, const Vec3& wh, const Vec3& n, double dist, const Vec3& wall_velocity,
-                  const Vec3& origin, WallContactList& wc, std::size_t e, double time, double dt,
-                  bool rows, Vec3& f, Vec3& tq) {
+                  const Vec3& wk, const Vec3& vh, const Vec3& wh, const Vec3& n, double dist,
+                  const Vec3& wall_velocity, const Vec3& origin, WallContactList& wc, std::size_t e,
+                  double time, double dt, bool rows, Vec3& f, Vec3& tq) {
   ContactGeometry g;
   g.n = n;
   g.delta = p.radius[k] - dist;
@@ -155,85 +157,87 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
 
 template <class Table>
 LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, const Predicted& pr,
-                                             const DemSettings& s, const std::vector<Wall>& walls,
-                                             const PairList& pl, WallContactList& wc, double time,
-                                             std::size_t k) {
+                                          const DemSettings& s, const std::vector<Wall>& walls,
+                                          const PairList& pl, WallContactList& wc, double time,
+                                          std::size_t k) {
   using Law = typename Table::law_type;
   const double dt = s.dt, h = 0.5 * dt, range = tab.range;
-    const Vec3& vk = pr.v[k];
-    const Vec3& wk = pr.w[k];
-    const Vec3 vh = p.v[k], wh = p.omega[k];
-    Vec3 f = p.mass[k] * s.gravity;
-    Vec3 tq = Vec3::Zero();
-    // Walls first, in entry order (sorted by wall, then triangle).
-    for (std::size_t e = wc.first[k]; e < wc.first[k + 1];) {
-      const Wall& w = walls[wc.wall[e]];
-      const auto& prm = tab.wall(p.material[k], w.material);
-      if (const auto* mesh = std::get_if<MeshWall>(&w.shape)) {
-        std::size_t e1 = e;
-        while (e1 < wc.first[k + 1] && wc.wall[e1] == wc.wall[e]) ++e1;
-        thread_local std::vector<MeshHit> hits;
-        thread_local std::vector<std::size_t> hit_entry;
-        thread_local std::vector<char> keep, kept_entry;
-        hits.clear(), hit_entry.clear();
-        const double reach = p.radius[k] + range;
-        for (std::size_t q = e; q < e1; ++q) {
-          const MeshClosest c = mesh->closest(wc.tri[q], p.x[k]);
-          if (c.dist2 < reach * reach && c.dist2 > 0) hits.push_back({wc.tri[q], c}), hit_entry.push_back(q);
-        }
-        select_mesh_contacts(mesh->mesh, hits, keep);
-        kept_entry.assign(e1 - e, 0);
-        for (std::size_t m = 0; m < hits.size(); ++m)
-          if (keep[m]) kept_entry[hit_entry[m] - e] = 1;
-        // A contact that moves onto a neighbouring triangle keeps its history (flat meshes behave
-        // like the analytic plane): a new kept entry inherits from a vanished one of this mesh.
-        for (std::size_t q = e; q < e1; ++q) {
-          if (!kept_entry[q - e] || wc.state[q]) continue;
-          for (std::size_t r = e; r < e1; ++r)
-            if (!kept_entry[r - e] && (wc.state[r] & kInteracting)) {
-              wc.history[q] = wc.history[r], wc.tally[q] = wc.tally[r], wc.state[q] = wc.state[r];
-              wc.history[r] = ContactHistory{}, wc.tally[r] = ContactTally{}, wc.state[r] = 0;
-              break;
-            }
-        }
-        for (std::size_t m = 0; m < hits.size(); ++m) {
-          if (!keep[m]) continue;
-          const std::size_t q = hit_entry[m];
-          const Vec3 d = hits[m].closest.point - p.x[k];
-          const double dist = std::sqrt(hits[m].closest.dist2);
-          wall_contact<Law>(prm, p, k, vk, wk, vh, wh, d / dist, dist,
-                            mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin, wc,
-                            q, time, dt, s.collisions.rows, f, tq);
-        }
-        for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
-          if (!kept_entry[q - e] && wc.state[q])
-            wall_contact<Law>(prm, p, k, vk, wk, vh, wh, Vec3::UnitZ(), 1e300, Vec3::Zero(), w.torque_origin,
-                              wc, q, time, dt, s.collisions.rows, f, tq);
-        e = e1;
-      } else {
-        const WallPoint wp = analytic_wall_point(w, p.x[k], time);
-        if (p.radius[k] - wp.dist > -range || wc.state[e])
-          wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300), wp.wall_velocity,
-                            w.torque_origin, wc, e, time, dt, s.collisions.rows, f, tq);
-        ++e;
+  const Vec3& vk = pr.v[k];
+  const Vec3& wk = pr.w[k];
+  const Vec3 vh = p.v[k], wh = p.omega[k];
+  Vec3 f = p.mass[k] * s.gravity;
+  Vec3 tq = Vec3::Zero();
+  // Walls first, in entry order (sorted by wall, then triangle).
+  for (std::size_t e = wc.first[k]; e < wc.first[k + 1];) {
+    const Wall& w = walls[wc.wall[e]];
+    const auto& prm = tab.wall(p.material[k], w.material);
+    if (const auto* mesh = std::get_if<MeshWall>(&w.shape)) {
+      std::size_t e1 = e;
+      while (e1 < wc.first[k + 1] && wc.wall[e1] == wc.wall[e]) ++e1;
+      thread_local std::vector<MeshHit> hits;
+      thread_local std::vector<std::size_t> hit_entry;
+      thread_local std::vector<char> keep, kept_entry;
+      hits.clear(), hit_entry.clear();
+      const double reach = p.radius[k] + range;
+      for (std::size_t q = e; q < e1; ++q) {
+        const MeshClosest c = mesh->closest(wc.tri[q], p.x[k]);
+        if (c.dist2 < reach * reach && c.dist2 > 0)
+          hits.push_back({wc.tri[q], c}), hit_entry.push_back(q);
       }
+      select_mesh_contacts(mesh->mesh, hits, keep);
+      kept_entry.assign(e1 - e, 0);
+      for (std::size_t m = 0; m < hits.size(); ++m)
+        if (keep[m]) kept_entry[hit_entry[m] - e] = 1;
+      // A contact that moves onto a neighbouring triangle keeps its history (flat meshes behave
+      // like the analytic plane): a new kept entry inherits from a vanished one of this mesh.
+      for (std::size_t q = e; q < e1; ++q) {
+        if (!kept_entry[q - e] || wc.state[q]) continue;
+        for (std::size_t r = e; r < e1; ++r)
+          if (!kept_entry[r - e] && (wc.state[r] & kInteracting)) {
+            wc.history[q] = wc.history[r], wc.tally[q] = wc.tally[r], wc.state[q] = wc.state[r];
+            wc.history[r] = ContactHistory{}, wc.tally[r] = ContactTally{}, wc.state[r] = 0;
+            break;
+          }
+      }
+      for (std::size_t m = 0; m < hits.size(); ++m) {
+        if (!keep[m]) continue;
+        const std::size_t q = hit_entry[m];
+        const Vec3 d = hits[m].closest.point - p.x[k];
+        const double dist = std::sqrt(hits[m].closest.dist2);
+        wall_contact<Law>(prm, p, k, vk, wk, vh, wh, d / dist, dist,
+                          mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin,
+                          wc, q, time, dt, s.collisions.rows, f, tq);
+      }
+      for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
+        if (!kept_entry[q - e] && wc.state[q])
+          wall_contact<Law>(prm, p, k, vk, wk, vh, wh, Vec3::UnitZ(), 1e300, Vec3::Zero(),
+                            w.torque_origin, wc, q, time, dt, s.collisions.rows, f, tq);
+      e = e1;
+    } else {
+      const WallPoint wp = analytic_wall_point(w, p.x[k], time);
+      if (p.radius[k] - wp.dist > -range || wc.state[e])
+        wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300),
+                          wp.wall_velocity, w.torque_origin, wc, e, time, dt, s.collisions.rows, f,
+                          tq);
+      ++e;
     }
-    for (std::uint32_t q = pl.first[k]; q < pl.first[k + 1]; ++q)
-      if (pl.state[q] & kInteracting) f += pl.force[q], tq += pl.torque_i[q];
-    for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r) {
-      const std::uint32_t q = pl.jpair[r];
-      if (pl.state[q] & kInteracting) f -= pl.force[q], tq += pl.torque_j[q];
-    }
-    p.force[k] = f;
-    p.torque[k] = tq;
-    p.v[k] += (h / p.mass[k]) * f;
-    p.omega[k] += (h / p.inertia[k]) * tq;
+  }
+  for (std::uint32_t q = pl.first[k]; q < pl.first[k + 1]; ++q)
+    if (pl.state[q] & kInteracting) f += pl.force[q], tq += pl.torque_i[q];
+  for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r) {
+    const std::uint32_t q = pl.jpair[r];
+    if (pl.state[q] & kInteracting) f -= pl.force[q], tq += pl.torque_j[q];
+  }
+  p.force[k] = f;
+  p.torque[k] = tq;
+  p.v[k] += (h / p.mass[k]) * f;
+  p.omega[k] += (h / p.inertia[k]) * tq;
 }
 
 template <class Table>
-void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr, const DemSettings& s,
-                       const std::vector<Wall>& walls, const PairList& pl, WallContactList& wc,
-                       double time) {
+void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr,
+                       const DemSettings& s, const std::vector<Wall>& walls, const PairList& pl,
+                       WallContactList& wc, double time) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < n; ++k) particle_kernel(tab, p, pr, s, walls, pl, wc, time, k);

@@ -1,5 +1,5 @@
-// Neighbour rebuild of DemSolver: periodic wrap, removals, spatial sort, new pair and wall lists with
-// the contact history carried over.
+// Neighbour rebuild of DemSolver: periodic wrap, removals, spatial sort, new pair and wall lists
+// with the contact history carried over.
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -44,7 +44,8 @@ void DemSolver::rebuild() {
     gone[k] = 1;
     lost_ += lost && !remove_flag_[k];
     mass_removed_ += p_.mass[k];
-    removed_ += 0.5 * p_.mass[k] * p_.v[k].squaredNorm() + 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm() -
+    removed_ += 0.5 * p_.mass[k] * p_.v[k].squaredNorm() +
+                0.5 * p_.inertia[k] * p_.omega[k].squaredNorm() -
                 p_.mass[k] * s_.gravity.dot(p_.x[k]);
   }
   remove_flag_.clear();
@@ -83,7 +84,8 @@ void DemSolver::rebuild() {
     if (q != kGone)
       for (std::size_t f = wc_.first[q]; f < wc_.first[q + 1]; ++f)
         if (wc_.wall[f] == old_wc.wall[e] && wc_.tri[f] == old_wc.tri[e]) {
-          wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e], wc_.state[f] = old_wc.state[e];
+          wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e],
+          wc_.state[f] = old_wc.state[e];
           found = true;
           break;
         }
@@ -115,13 +117,15 @@ void DemSolver::build_wall_list(const CellList& cells, double extra) {
     const auto for_cells = [&](std::size_t t, auto&& f) {
       const auto& tri = m->mesh.triangles[t];
       Vec3 lo = m->current[tri[0]], hi = lo;
-      for (int c = 1; c < 3; ++c) lo = lo.cwiseMin(m->current[tri[c]]), hi = hi.cwiseMax(m->current[tri[c]]);
+      for (int c = 1; c < 3; ++c)
+        lo = lo.cwiseMin(m->current[tri[c]]), hi = hi.cwiseMax(m->current[tri[c]]);
       lo.array() -= inflate, hi.array() += inflate;
       for (int z = g.coord(lo[2], 2); z <= g.coord(hi[2], 2); ++z)
         for (int y = g.coord(lo[1], 1); y <= g.coord(hi[1], 1); ++y)
           for (int x = g.coord(lo[0], 0); x <= g.coord(hi[0], 0); ++x) f(g.index(x, y, z));
     };
-    for (std::size_t t = 0; t < m->mesh.size(); ++t) for_cells(t, [&](std::size_t c) { ++count[c + 1]; });
+    for (std::size_t t = 0; t < m->mesh.size(); ++t)
+      for_cells(t, [&](std::size_t c) { ++count[c + 1]; });
     for (std::size_t c = 0; c < g.cells(); ++c) count[c + 1] += count[c];
     bin_tris[w].resize(count.back());
     std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);

@@ -40,8 +40,8 @@ void DemSolver::remove_particles(const std::vector<std::uint32_t>& idx) {
 
 int DemSolver::add_wall(Wall w) {
   if (w.material < 0 || w.material >= static_cast<int>(materials_.size()))
-    throw InputError("walls." + w.name + ".material", std::to_string(w.material), "no such material",
-                     "name one of the [[materials]]");
+    throw InputError("walls." + w.name + ".material", std::to_string(w.material),
+                     "no such material", "name one of the [[materials]]");
   walls_.push_back(std::move(w));
   if (auto* m = std::get_if<MeshWall>(&walls_.back().shape)) m->update(t_);
   need_rebuild_ = true;
@@ -110,8 +110,8 @@ void DemSolver::particle_pass(const Table& t) {
 }
 
 void DemSolver::event_scan() {
-  const auto scan = [&](std::vector<std::uint8_t>& state, std::vector<ContactTally>& tally, bool wall,
-                        auto&& ids, auto&& where) {
+  const auto scan = [&](std::vector<std::uint8_t>& state, std::vector<ContactTally>& tally,
+                        bool wall, auto&& ids, auto&& where) {
     for (std::size_t k = 0; k < state.size(); ++k) {
       const std::uint8_t st = state[k];
       if (!(st & (kStarted | kEnded))) continue;
@@ -127,12 +127,18 @@ void DemSolver::event_scan() {
       state[k] = st & (kInteracting | kTouching);
     }
   };
-  scan(pairs_.state, pairs_.tally, false,
-       [&](std::size_t k) { return std::pair{p_.id[pairs_.i[k]], p_.id[pairs_.j[k]]}; },
-       [&](std::size_t k) { return Vec3(0.5 * (p_.x[pairs_.i[k]] + p_.x[pairs_.j[k]])); });
-  scan(wc_.state, wc_.tally, true,
-       [&](std::size_t k) { return std::pair{p_.id[wc_.particle[k]], std::int64_t(-1 - wc_.wall[k])}; },
-       [&](std::size_t k) { return wc_.contact_point[k]; });
+  scan(
+      pairs_.state, pairs_.tally, false,
+      [&](std::size_t k) {
+        return std::pair{p_.id[pairs_.i[k]], p_.id[pairs_.j[k]]};
+      },
+      [&](std::size_t k) { return Vec3(0.5 * (p_.x[pairs_.i[k]] + p_.x[pairs_.j[k]])); });
+  scan(
+      wc_.state, wc_.tally, true,
+      [&](std::size_t k) {
+        return std::pair{p_.id[wc_.particle[k]], std::int64_t(-1 - wc_.wall[k])};
+      },
+      [&](std::size_t k) { return wc_.contact_point[k]; });
 }
 
 void DemSolver::sum_wall_loads() {
@@ -157,7 +163,8 @@ void DemSolver::sum_wall_loads() {
     for (std::size_t k = b * kSumBlock; k < std::min(ne, (b + 1) * kSumBlock); ++k) {
       if (!(wc_.state[k] & kInteracting)) continue;
       const std::size_t w = wc_.wall[k];
-      for (int a = 0; a < 3; ++a) v[6 * w + a] -= wc_.force[k][a], v[6 * w + 3 + a] += wc_.wall_torque[k][a];
+      for (int a = 0; a < 3; ++a)
+        v[6 * w + a] -= wc_.force[k][a], v[6 * w + 3 + a] += wc_.wall_torque[k][a];
       v[6 * nw] += wc_.power[k];
     }
   }
@@ -173,8 +180,8 @@ void DemSolver::sum_wall_loads() {
 }
 
 std::size_t DemSolver::contacts_pp() const {
-  return static_cast<std::size_t>(
-      std::count_if(pairs_.state.begin(), pairs_.state.end(), [](auto s) { return s & kTouching; }));
+  return static_cast<std::size_t>(std::count_if(pairs_.state.begin(), pairs_.state.end(),
+                                                [](auto s) { return s & kTouching; }));
 }
 std::size_t DemSolver::contacts_pw() const {
   return static_cast<std::size_t>(
@@ -184,11 +191,12 @@ std::size_t DemSolver::contacts_pw() const {
 EnergyTotals DemSolver::energy() const {
   EnergyTotals e;
   const std::size_t n = p_.size();
-  e.kinetic_translational =
-      deterministic_sum(n, [&](std::size_t k) { return 0.5 * p_.mass[k] * p_.v[k].squaredNorm(); }, 0.0);
-  e.kinetic_rotational =
-      deterministic_sum(n, [&](std::size_t k) { return 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm(); }, 0.0);
-  e.potential = deterministic_sum(n, [&](std::size_t k) { return -p_.mass[k] * s_.gravity.dot(p_.x[k]); }, 0.0);
+  e.kinetic_translational = deterministic_sum(
+      n, [&](std::size_t k) { return 0.5 * p_.mass[k] * p_.v[k].squaredNorm(); }, 0.0);
+  e.kinetic_rotational = deterministic_sum(
+      n, [&](std::size_t k) { return 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm(); }, 0.0);
+  e.potential = deterministic_sum(
+      n, [&](std::size_t k) { return -p_.mass[k] * s_.gravity.dot(p_.x[k]); }, 0.0);
   using Acc = Eigen::Matrix<double, 6, 1>;  // elastic, nd, td, sliding, rolling, stiffness
   const auto tally_sum = [](const std::vector<ContactTally>& t) {
     return deterministic_sum(
@@ -196,7 +204,8 @@ EnergyTotals DemSolver::energy() const {
         [&](std::size_t k) {
           const auto& c = t[k];
           Acc a;
-          a << c.u_elastic, c.e_normal_damping, c.e_tangential_damping, c.e_sliding, c.e_rolling, c.e_stiffness;
+          a << c.u_elastic, c.e_normal_damping, c.e_tangential_damping, c.e_sliding, c.e_rolling,
+              c.e_stiffness;
           return a;
         },
         Acc(Acc::Zero()));

@@ -4,11 +4,13 @@
 //
 // Time step (ARCHITECTURE in README.md):
 //  1. half kick and drift: v += dt/2 F/m, omega += dt/2 T/I, x += dt v; walls move to t + dt;
-//  2. neighbour rebuild if a particle moved more than skin/2 (or a wall and a particle together more
-//     than the skin): periodic wrap, removals, spatial sort, new pair and wall lists, history carried;
+//  2. neighbour rebuild if a particle moved more than skin/2 (or a wall and a particle together
+//  more
+//     than the skin): periodic wrap, removals, spatial sort, new pair and wall lists, history
+//     carried;
 //  3. pair pass, in parallel over pairs, each writing only its own force slot, with the velocity
-//     predicted to the end of the step (v + dt/2 F_old/m: second-order consistent, which the dashpot
-//     needs to reproduce e; the half-step velocity alone misses e = 0.3 by more than 1 %);
+//     predicted to the end of the step (v + dt/2 F_old/m: second-order consistent, which the
+//     dashpot needs to reproduce e; the half-step velocity alone misses e = 0.3 by more than 1 %);
 //  4. particle pass, in parallel over particles: wall contacts, then the gather of pair forces in a
 //     fixed order (as i, then as j), gravity, and the second half kick;
 //  5. serial event scan (contact starts and ends) and fixed-block sums of wall loads.
@@ -33,14 +35,14 @@ class H5In;
 namespace lbdem::dem {
 
 struct DemSettings {
-  double dt = 1e-6;                       // [s]
-  Vec3 gravity = Vec3(0, 0, -9.81);       // [m/s^2]
-  double skin = 1e-4;                     // Verlet skin [m]
+  double dt = 1e-6;                  // [s]
+  Vec3 gravity = Vec3(0, 0, -9.81);  // [m/s^2]
+  double skin = 1e-4;                // Verlet skin [m]
   Domain domain;
   ContactSettings contact;
   CollisionSettings collisions;
-  int sort_every = 1;                     // spatial sort every n-th rebuild
-  double lost_margin = 0;                 // particles this far outside a non-periodic face are removed [m]
+  int sort_every = 1;      // spatial sort every n-th rebuild
+  double lost_margin = 0;  // particles this far outside a non-periodic face are removed [m]
 };
 
 /// Energy accounts [J]. Stored: kinetic, potential (relative to the reference of the first call),
@@ -55,7 +57,9 @@ struct EnergyTotals {
   double stored() const { return kinetic() + potential + elastic; }
   double dissipated() const { return normal_damping + tangential_damping + sliding + rolling; }
   /// Energy put in since the start: initial stored energy + every source.
-  double injected(double stored0) const { return stored0 + wall_work + stiffness_change + inserted - removed; }
+  double injected(double stored0) const {
+    return stored0 + wall_work + stiffness_change + inserted - removed;
+  }
 };
 
 class DemSolver {
@@ -69,7 +73,8 @@ class DemSolver {
 
   /// Adds a particle; takes effect at the next step (forces a neighbour rebuild).
   void add_particle(const Vec3& x, const Vec3& v, double radius, int material);
-  /// Marks particles for removal at the next rebuild (an outlet); their energy is booked as removed.
+  /// Marks particles for removal at the next rebuild (an outlet); their energy is booked as
+  /// removed.
   void remove_particles(const std::vector<std::uint32_t>& indices);
   int add_wall(Wall w);
   std::vector<Wall>& walls() { return walls_; }
@@ -90,7 +95,8 @@ class DemSolver {
   CollisionStats& collisions() { return stats_; }
   double interaction_range() const;  // largest distance beyond touch at which the law acts [m]
 
-  /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs change).
+  /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs
+  /// change).
   static constexpr int kCheckpointLayout = 2;
   void save(H5Out& out) const;
   void load(const H5In& in);
@@ -115,9 +121,9 @@ class DemSolver {
   PairList pairs_;
   WallContactList wc_;
   CollisionStats stats_;
-  std::vector<Vec3> x_ref_;                       // positions at the last rebuild
-  std::vector<Vec3> v_pred_, w_pred_;             // end-of-step predicted velocities (per step)
-  std::vector<std::vector<Vec3>> wall_ref_;       // mesh vertices at the last rebuild
+  std::vector<Vec3> x_ref_;                  // positions at the last rebuild
+  std::vector<Vec3> v_pred_, w_pred_;        // end-of-step predicted velocities (per step)
+  std::vector<std::vector<Vec3>> wall_ref_;  // mesh vertices at the last rebuild
   std::vector<std::uint8_t> remove_flag_;
   double t_ = 0;
   std::int64_t step_ = 0, rebuilds_ = 0, lost_ = 0, next_id_ = 0;

@@ -37,8 +37,8 @@ struct Domain {
 };
 
 /// Cells of edge >= the interaction cut-off along each axis, tiling the box exactly (so periodic
-/// wrap-around neighbours are adjacent cells). Particles outside a non-periodic box are clamped to the
-/// edge cells (clamping is 1-Lipschitz in cell units, so no pair is missed).
+/// wrap-around neighbours are adjacent cells). Particles outside a non-periodic box are clamped to
+/// the edge cells (clamping is 1-Lipschitz in cell units, so no pair is missed).
 struct CellGrid {
   Vec3 lo = Vec3::Zero();
   Vec3 inv_h = Vec3::Ones();
@@ -63,7 +63,9 @@ struct CellGrid {
   std::size_t index(int cx, int cy, int cz) const {
     return (static_cast<std::size_t>(cz) * n[1] + cy) * n[0] + cx;
   }
-  std::size_t cell_of(const Vec3& x) const { return index(coord(x[0], 0), coord(x[1], 1), coord(x[2], 2)); }
+  std::size_t cell_of(const Vec3& x) const {
+    return index(coord(x[0], 0), coord(x[1], 1), coord(x[2], 2));
+  }
 };
 
 }  // namespace lbdem::dem

@@ -6,7 +6,9 @@
 
 namespace lbdem::dem {
 
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform01(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 double RadiusDistribution::sample(std::mt19937_64& rng) const {
   if (kind == "uniform") return min + (max - min) * uniform01(rng);
@@ -26,11 +28,14 @@ std::vector<Placed> random_fill(const FillRequest& req, const std::vector<Placed
   double rmax = req.radius.largest();
   for (const auto& e : existing) rmax = std::max(rmax, e.r);
   const double h = 2 * rmax;
-  // Hash grid of everything placed so far, cell 2 r_max (of old and new): overlap checks look at 27 cells.
+  // Hash grid of everything placed so far, cell 2 r_max (of old and new): overlap checks look at 27
+  // cells.
   std::unordered_map<std::int64_t, std::vector<int>> grid;
   std::vector<Placed> all = existing;
   const auto key = [&](const Vec3& x) {
-    const auto c = [&](int a) { return static_cast<std::int64_t>(std::floor(x[a] / h)) + (1 << 20); };
+    const auto c = [&](int a) {
+      return static_cast<std::int64_t>(std::floor(x[a] / h)) + (1 << 20);
+    };
     return (c(2) << 42) | (c(1) << 21) | c(0);
   };
   for (int k = 0; k < static_cast<int>(all.size()); ++k) grid[key(all[k].x)].push_back(k);

@@ -12,11 +12,11 @@
 namespace lbdem::dem {
 
 struct RadiusDistribution {
-  std::string kind = "fixed";  // fixed | uniform | lognormal
-  double radius = 5e-4;        // fixed [m]
+  std::string kind = "fixed";     // fixed | uniform | lognormal
+  double radius = 5e-4;           // fixed [m]
   double min = 4e-4, max = 6e-4;  // uniform range, and clipping range of lognormal [m]
-  double median = 5e-4;        // lognormal median radius [m]
-  double sigma = 0.2;          // lognormal: standard deviation of ln r [-]
+  double median = 5e-4;           // lognormal median radius [m]
+  double sigma = 0.2;             // lognormal: standard deviation of ln r [-]
 
   double largest() const { return kind == "fixed" ? radius : max; }
   double smallest() const { return kind == "fixed" ? radius : min; }
@@ -26,12 +26,12 @@ struct RadiusDistribution {
 double uniform01(std::mt19937_64& rng);
 
 struct FillRequest {
-  Vec3 lo, hi;                   // region [m]
-  std::int64_t count = 0;        // particles to place (or:)
-  double mass = 0;               // total mass to place [kg]
-  double density = 2500;         // [kg/m^3] (for the mass target)
+  Vec3 lo, hi;             // region [m]
+  std::int64_t count = 0;  // particles to place (or:)
+  double mass = 0;         // total mass to place [kg]
+  double density = 2500;   // [kg/m^3] (for the mass target)
   RadiusDistribution radius;
-  int max_attempts = 200;        // per particle
+  int max_attempts = 200;  // per particle
 };
 
 struct Placed {

@@ -20,8 +20,8 @@ struct Material {
 };
 
 /// Pair properties. Elastic constants follow contact mechanics (Johnson 1985, eq. 4.22 for E*;
-/// Mindlin 1949 for G*); restitution, friction and rolling friction are the arithmetic mean of the two
-/// materials (equal materials keep their own values); a wall is a material like any other.
+/// Mindlin 1949 for G*); restitution, friction and rolling friction are the arithmetic mean of the
+/// two materials (equal materials keep their own values); a wall is a material like any other.
 struct MaterialPair {
   double e_star;            // 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 [Pa]
   double g_star;            // 1/G* = (2-nu1)/G1 + (2-nu2)/G2 [Pa]
@@ -35,6 +35,8 @@ struct MaterialPair {
 MaterialPair mix(const Material& a, const Material& b);
 
 /// Effective radius R* = R1 R2/(R1+R2); a wall has R = infinity (pass r2 <= 0).
-inline double effective(double a, double b) { return b <= 0 ? a : a * b / (a + b); }
+inline double effective(double a, double b) {
+  return b <= 0 ? a : a * b / (a + b);
+}
 
 }  // namespace lbdem::dem

@@ -99,7 +99,8 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
   build_rows(
       np, out.first,
       [&](std::size_t p, auto&& emit) {
-        for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra, [&](std::uint32_t q) { emit(q); });
+        for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra,
+                       [&](std::uint32_t q) { emit(q); });
       },
       [&](std::size_t total) { out.resize(total); },
       [&](std::uint32_t slot, std::size_t p, std::uint32_t q) {
@@ -108,7 +109,8 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
       });
   // Each particle's partners ascending: carry_over() finds pairs by binary search.
 #pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t p = 0; p < np; ++p) std::sort(out.j.begin() + out.first[p], out.j.begin() + out.first[p + 1]);
+  for (std::size_t p = 0; p < np; ++p)
+    std::sort(out.j.begin() + out.first[p], out.j.begin() + out.first[p + 1]);
   out.build_transpose(np);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// Half neighbour list of particle pairs (i < j) within the cut-off plus skin, sorted by (i, j), with
-// each pair's contact history and accounting, and the two CSR views the deterministic gather needs:
-// pairs where p is i (a contiguous range) and pairs where p is j (a transposed index).
+// Half neighbour list of particle pairs (i < j) within the cut-off plus skin, sorted by (i, j),
+// with each pair's contact history and accounting, and the two CSR views the deterministic gather
+// needs: pairs where p is i (a contiguous range) and pairs where p is j (a transposed index).
 #include <cstdint>
 #include <vector>
 
@@ -10,9 +10,10 @@
 
 namespace lbdem::dem {
 
-/// Accounting of the contact a pair is in now: energies dissipated since it began [J], the powers of
-/// the last step [W] (trapezoidal integration) and the impact record. The fields every step updates
-/// come first. (Aligning the struct to a cache line was measured: no gain on the bench bed.)
+/// Accounting of the contact a pair is in now: energies dissipated since it began [J], the powers
+/// of the last step [W] (trapezoidal integration) and the impact record. The fields every step
+/// updates come first. (Aligning the struct to a cache line was measured: no gain on the bench
+/// bed.)
 struct ContactTally {
   double e_normal_damping = 0, e_tangential_damping = 0;
   double p_normal_damping = 0, p_tangential_damping = 0;
@@ -25,11 +26,13 @@ struct ContactTally {
   double max_overlap = 0;  // [m]
   double max_force = 0;    // largest normal contact force [N]
 
-  double dissipated() const { return e_normal_damping + e_tangential_damping + e_sliding + e_rolling; }
+  double dissipated() const {
+    return e_normal_damping + e_tangential_damping + e_sliding + e_rolling;
+  }
 };
 
-/// State bits of a pair or wall contact after an evaluation. kStarted/kEnded mark the step in which a
-/// touch began or ended; the serial event scan consumes and clears them.
+/// State bits of a pair or wall contact after an evaluation. kStarted/kEnded mark the step in which
+/// a touch began or ended; the serial event scan consumes and clears them.
 enum PairState : std::uint8_t { kInteracting = 1, kTouching = 2, kStarted = 4, kEnded = 8 };
 
 struct PairList {

@@ -9,11 +9,11 @@
 namespace lbdem::dem {
 
 struct ParticleArrays {
-  std::vector<Vec3> x;       // position [m]
-  std::vector<Vec3> v;       // velocity [m/s]
-  std::vector<Vec3> omega;   // angular velocity [rad/s]
-  std::vector<Vec3> force;   // total force of the last evaluation [N]
-  std::vector<Vec3> torque;  // total torque of the last evaluation [N m]
+  std::vector<Vec3> x;          // position [m]
+  std::vector<Vec3> v;          // velocity [m/s]
+  std::vector<Vec3> omega;      // angular velocity [rad/s]
+  std::vector<Vec3> force;      // total force of the last evaluation [N]
+  std::vector<Vec3> torque;     // total torque of the last evaluation [N m]
   std::vector<double> radius;   // [m]
   std::vector<double> mass;     // [kg]
   std::vector<double> inertia;  // moment of inertia 2/5 m R^2 [kg m^2]

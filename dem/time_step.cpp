@@ -8,11 +8,14 @@ namespace lbdem::dem {
 
 TimeScales time_scales(const ContactSettings& s, const std::vector<Material>& materials,
                        const std::vector<int>& wall_materials, double r, double v) {
-  TimeScales out{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), ""};
-  const auto consider = [&](const MaterialPair& mp, double r_star, double m_star, const std::string& what) {
+  TimeScales out{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                 ""};
+  const auto consider = [&](const MaterialPair& mp, double r_star, double m_star,
+                            const std::string& what) {
     double tc;
     if (s.normal == "linear") {
-      const double gamma = 2.0 * std::abs(restitution_beta(mp.restitution)) * std::sqrt(m_star * mp.stiffness);
+      const double gamma =
+          2.0 * std::abs(restitution_beta(mp.restitution)) * std::sqrt(m_star * mp.stiffness);
       tc = linear_contact_time(mp.stiffness, gamma, m_star);
     } else {
       tc = hertz_contact_time(mp.e_star, r_star, m_star, v);
@@ -24,7 +27,8 @@ TimeScales time_scales(const ContactSettings& s, const std::vector<Material>& ma
     const double mass = m.density * 4.0 / 3.0 * kPi * r * r * r;
     consider(mix(m, m), 0.5 * r, 0.5 * mass, m.name + "-" + m.name);
     for (int w : wall_materials) consider(mix(m, materials[w]), r, mass, m.name + "-wall");
-    out.rayleigh_time = std::min(out.rayleigh_time, rayleigh_time(r, m.density, m.shear_modulus(), m.poisson_ratio));
+    out.rayleigh_time = std::min(out.rayleigh_time,
+                                 rayleigh_time(r, m.density, m.shear_modulus(), m.poisson_ratio));
   }
   return out;
 }

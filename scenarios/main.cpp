@@ -12,10 +12,12 @@ int main(int argc, char** argv) {
   RunOptions opt;
   auto* run = app.add_subcommand("run", "run a scenario's default preset or a config file");
   run->add_option("scenario", opt.scenario, "scenario name (see --list)");
-  run->add_option("--config", opt.config, "TOML config file (default: the scenario's default preset)");
+  run->add_option("--config", opt.config,
+                  "TOML config file (default: the scenario's default preset)");
   run->add_option("--set", opt.sets, "override a key: --set key.path=value (repeatable)");
   run->add_option("--out", opt.out, "run folder (default: runs/<scenario>-<date>-<time>)");
-  run->add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
   run->add_option("--resume", opt.resume, "continue the run in RUN_DIR from its checkpoint.h5");
   run->add_flag("--list", opt.list, "list the scenarios");
   run->add_flag("--no-plots", opt.no_plots, "skip the PNG plots");

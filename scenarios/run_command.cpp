@@ -28,7 +28,8 @@ struct ScenarioEntry {
 // Checked-in table of scenarios (STYLE §2 "registration").
 const std::vector<ScenarioEntry>& scenarios() {
   static const std::vector<ScenarioEntry> table = {
-      {"box", "particles poured into a box and settling; faces wall/periodic/open, STL walls, inflow",
+      {"box",
+       "particles poured into a box and settling; faces wall/periodic/open, STL walls, inflow",
        "scenarios/box/presets/default.toml"},
   };
   return table;
@@ -44,12 +45,13 @@ std::string stamp() {
 void make_plots(const std::string& dir, Log& log) {
   const std::string py = LBDEM_PYTHON;
   if (py.empty()) {
-    log.line("plots skipped: no python3 with numpy, h5py and matplotlib was found at configure time");
+    log.line(
+        "plots skipped: no python3 with numpy, h5py and matplotlib was found at configure time");
     return;
   }
   const std::string tools = std::string(LBDEM_SOURCE_DIR) + "/tools/";
-  const std::string cmd = "'" + py + "' '" + tools + "plot_run.py' '" + dir + "' > /dev/null && '" + py + "' '" +
-                          tools + "collision_summary.py' '" + dir + "' > /dev/null";
+  const std::string cmd = "'" + py + "' '" + tools + "plot_run.py' '" + dir + "' > /dev/null && '" +
+                          py + "' '" + tools + "collision_summary.py' '" + dir + "' > /dev/null";
   if (std::system(cmd.c_str()) != 0) log.line("warning: the plotting tools failed (" + cmd + ")");
 }
 
@@ -57,7 +59,8 @@ void make_plots(const std::string& dir, Log& log) {
 
 int run_study(const std::string& name, bool list) {
   if (list || name.empty()) {
-    std::cout << "studies: none yet (the rheometer, fluidized-bed and jet-mill studies come with their issues)\n";
+    std::cout << "studies: none yet (the rheometer, fluidized-bed and jet-mill studies come with "
+                 "their issues)\n";
     return 0;
   }
   throw InputError("study", name, "unknown study; known: none yet", "run ./lbdem study --list");
@@ -71,7 +74,8 @@ int run_scenario(const RunOptions& opt) {
   const bool resume = !opt.resume.empty();
   std::string name = opt.scenario;
   if (resume && !fs::exists(opt.resume + "/checkpoint.h5"))
-    throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder", "give a run folder that has one");
+    throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder",
+                     "give a run folder that has one");
   const ScenarioEntry* entry = nullptr;
   if (resume && name.empty()) name = "box";
   for (const auto& s : scenarios())
@@ -79,12 +83,16 @@ int run_scenario(const RunOptions& opt) {
   if (!entry) {
     std::vector<std::string> names;
     for (const auto& s : scenarios()) names.push_back(s.name);
-    throw InputError("scenario", name.empty() ? "(none)" : name, "unknown scenario",
-                     names.empty() ? "" : "did you mean '" + nearest(name, names) + "'? (./lbdem run --list)");
+    throw InputError(
+        "scenario", name.empty() ? "(none)" : name, "unknown scenario",
+        names.empty() ? "" : "did you mean '" + nearest(name, names) + "'? (./lbdem run --list)");
   }
-  const std::string file = resume ? opt.resume + "/config.toml"
-                                  : (opt.config.empty() ? std::string(LBDEM_SOURCE_DIR) + "/" + entry->preset : opt.config);
-  if (!fs::exists(file)) throw InputError("--config", file, "file not found", "give the path of a TOML file");
+  const std::string file =
+      resume
+          ? opt.resume + "/config.toml"
+          : (opt.config.empty() ? std::string(LBDEM_SOURCE_DIR) + "/" + entry->preset : opt.config);
+  if (!fs::exists(file))
+    throw InputError("--config", file, "file not found", "give the path of a TOML file");
   Config cfg = Config::from_file(file);
   for (const auto& s : opt.sets) cfg.set_override(s);
   cfg.get_string("scenario", name);  // recorded, so the resolved config names its scenario
@@ -93,7 +101,8 @@ int run_scenario(const RunOptions& opt) {
   BoxScenario scenario(cfg);  // validates everything; throws InputError before any output
   cfg.check_unknown_keys();
 
-  const std::string dir = resume ? opt.resume : (opt.out.empty() ? "runs/" + name + "-" + stamp() : opt.out);
+  const std::string dir =
+      resume ? opt.resume : (opt.out.empty() ? "runs/" + name + "-" + stamp() : opt.out);
   if (!resume) {
     if (fs::exists(dir) && !fs::is_empty(dir))
       throw InputError("--out", dir, "folder exists and is not empty",
@@ -104,8 +113,8 @@ int run_scenario(const RunOptions& opt) {
   log.open(dir + "/log.txt", resume);
   write_file_atomic(dir + "/config.toml", cfg.resolved_toml());
   write_file_atomic(dir + "/status", "running\n");
-  log.line("lbdem " + std::string(resume ? "resuming " : "running ") + name + " in " + dir + " with " +
-           std::to_string(omp_get_max_threads()) + " threads");
+  log.line("lbdem " + std::string(resume ? "resuming " : "running ") + name + " in " + dir +
+           " with " + std::to_string(omp_get_max_threads()) + " threads");
   scenario.banner(log);
   RunContext ctx{dir, resume, omp_get_max_threads(), &log, !opt.no_plots};
   const auto t0 = std::chrono::steady_clock::now();
@@ -126,7 +135,8 @@ int run_scenario(const RunOptions& opt) {
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"
-            << "  config.toml log.txt timeseries.csv particles.h5 particles.xdmf collisions.h5 checkpoint.h5"
+            << "  config.toml log.txt timeseries.csv particles.h5 particles.xdmf collisions.h5 "
+               "checkpoint.h5"
             << (ctx.plots ? " energy_budget.png kinetic_energy.png" : "") << "\n";
   return rc;
 }

@@ -36,20 +36,20 @@ struct ContactLaw {
   /// Force on i from j (or a wall) for the geometry g; updates the history.
   ///
   /// Tangential spring (Cundall & Strack 1979; Luding 2008): xi is kept in the tangent plane by
-  /// projection with its length preserved, grows by v_t dt, gives F_t = -k_t xi - gamma_t v_t and is
-  /// capped at mu max(F_n, 0), F_n the normal contact force (elastic + damping, cohesion excluded).
-  /// Energy is booked so that the budget closes at the order of velocity Verlet: every term below is
-  /// the exact counterpart of the trapezoidal work of the step.
-  /// Sliding starts when the spring alone exceeds the cap: the spring is cut back to it, the dashpot
-  /// is off, and the sliding dissipation is the spring force, averaged over the step as velocity
-  /// Verlet averages the work, times the slip xi_trial - xi (zero for mu = 0; exactly the work minus
-  /// the change of spring energy). Below that, spring + dashpot is limited to the cap by limiting the
-  /// dashpot, which dissipates -(F_t - F_spring) . v_t. So no account turns negative and the budget
-  /// closes at second order. When k_t changes with the overlap (Mindlin),
-  /// 0.5 (k_t,new - k_t,old) |xi|^2 enters the spring without work: it is booked as e_stiffness so
-  /// that the energy budget closes (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's
-  /// energy leaves the same way.
-  static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h, double dt) {
+  /// projection with its length preserved, grows by v_t dt, gives F_t = -k_t xi - gamma_t v_t and
+  /// is capped at mu max(F_n, 0), F_n the normal contact force (elastic + damping, cohesion
+  /// excluded). Energy is booked so that the budget closes at the order of velocity Verlet: every
+  /// term below is the exact counterpart of the trapezoidal work of the step. Sliding starts when
+  /// the spring alone exceeds the cap: the spring is cut back to it, the dashpot is off, and the
+  /// sliding dissipation is the spring force, averaged over the step as velocity Verlet averages
+  /// the work, times the slip xi_trial - xi (zero for mu = 0; exactly the work minus the change of
+  /// spring energy). Below that, spring + dashpot is limited to the cap by limiting the dashpot,
+  /// which dissipates -(F_t - F_spring) . v_t. So no account turns negative and the budget closes
+  /// at second order. When k_t changes with the overlap (Mindlin), 0.5 (k_t,new - k_t,old) |xi|^2
+  /// enters the spring without work: it is booked as e_stiffness so that the energy budget closes
+  /// (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's energy leaves the same way.
+  static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h,
+                               double dt) {
     ContactForce out;
     double f_coh = 0;
     if constexpr (Cohesion::active) {
@@ -101,8 +101,8 @@ struct ContactLaw {
       if (f2 > cap * cap) ft *= cap / std::sqrt(f2);  // the dashpot is limited so that |F_t| <= cap
       out.p_tangential_damping = -(ft - fs).dot(vt);
     }
-    // Stiffness change at the trapezoidal level: U_{n+1} - U_n + (work of the spring force, averaged
-    // over the step) = 1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}.
+    // Stiffness change at the trapezoidal level: U_{n+1} - U_n + (work of the spring force,
+    // averaged over the step) = 1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}.
     out.e_stiffness = 0.5 * (s.k_t - kt_old) * xi_start.dot(h.xi);
     out.u_elastic += 0.5 * s.k_t * h.xi.squaredNorm();
     out.ft = ft;

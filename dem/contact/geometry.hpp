@@ -28,17 +28,17 @@ struct ContactHistory {
 /// Result of one evaluation. Energies: powers at this time level (integrated by the caller with the
 /// trapezoidal rule) and jumps that happened in this step.
 struct ContactForce {
-  Vec3 force = Vec3::Zero();   // total force on i [N]
-  Vec3 ft = Vec3::Zero();      // its tangential part [N] (torque arm n x ft)
-  Vec3 m_roll = Vec3::Zero();  // rolling torque on i [N m] (j gets -m_roll)
-  double fn = 0;               // normal contact force, elastic + damping, > 0 repulsive [N]
+  Vec3 force = Vec3::Zero();        // total force on i [N]
+  Vec3 ft = Vec3::Zero();           // its tangential part [N] (torque arm n x ft)
+  Vec3 m_roll = Vec3::Zero();       // rolling torque on i [N m] (j gets -m_roll)
+  double fn = 0;                    // normal contact force, elastic + damping, > 0 repulsive [N]
   double p_normal_damping = 0;      // [W]
   double p_tangential_damping = 0;  // [W]
-  double e_sliding = 0;        // energy lost to Coulomb sliding this step [J]
-  double e_rolling = 0;        // energy lost to rolling resistance this step [J]
-  double e_stiffness = 0;      // change of stored spring energy by stiffness change at fixed
-                               // elongation this step [J] (no force did this work; booked apart)
-  double u_elastic = 0;        // energy stored in this contact (springs + cohesion) [J]
+  double e_sliding = 0;             // energy lost to Coulomb sliding this step [J]
+  double e_rolling = 0;             // energy lost to rolling resistance this step [J]
+  double e_stiffness = 0;           // change of stored spring energy by stiffness change at fixed
+                           // elongation this step [J] (no force did this work; booked apart)
+  double u_elastic = 0;  // energy stored in this contact (springs + cohesion) [J]
 };
 
 }  // namespace lbdem::dem

@@ -8,17 +8,17 @@
 
 namespace lbdem::dem {
 
-/// F_n = 4/3 E* sqrt(R*) delta^{3/2} + gamma v_n with gamma = sqrt5 |beta(e)| sqrt(m* k_n) and the secant
-/// stiffness k_n = 4/3 E* sqrt(R* delta) (Tsuji et al. 1992, eq. 15; identical to LIGGGHTS'
-/// 2 sqrt(5/6) |beta| sqrt(m* S_n) with S_n = 2 E* sqrt(R* delta)). Convention: the normal force is NOT
-/// clipped at zero, the contact lasts until delta = 0, and the restitution is velocity independent.
-/// Tangential: k_t = 8 G* sqrt(R* delta) (Mindlin 1949), gamma_t = 2 sqrt(5/6) |beta| sqrt(m* k_t)
-/// (LIGGGHTS' tangential damping).
+/// F_n = 4/3 E* sqrt(R*) delta^{3/2} + gamma v_n with gamma = sqrt5 |beta(e)| sqrt(m* k_n) and the
+/// secant stiffness k_n = 4/3 E* sqrt(R* delta) (Tsuji et al. 1992, eq. 15; identical to LIGGGHTS'
+/// 2 sqrt(5/6) |beta| sqrt(m* S_n) with S_n = 2 E* sqrt(R* delta)). Convention: the normal force is
+/// NOT clipped at zero, the contact lasts until delta = 0, and the restitution is velocity
+/// independent. Tangential: k_t = 8 G* sqrt(R* delta) (Mindlin 1949), gamma_t = 2 sqrt(5/6) |beta|
+/// sqrt(m* k_t) (LIGGGHTS' tangential damping).
 struct HertzMindlin {
   struct Params {
-    double e_star;  // [Pa]
-    double g_star;  // [Pa]
-    double c_damp;  // sqrt5 |beta(e)| [-]
+    double e_star;   // [Pa]
+    double g_star;   // [Pa]
+    double c_damp;   // sqrt5 |beta(e)| [-]
     double t_ratio;  // gamma_t / gamma_n = 2 sqrt(G*/E*) [-]
   };
   static constexpr std::string_view name = "hertz_mindlin";
@@ -35,8 +35,8 @@ struct HertzMindlin {
   static double gamma(const Params& p, const State& s, double m_star) {
     return p.c_damp * std::sqrt(m_star * s.k_n);
   }
-  /// gamma_t / gamma_n = (c_t/c_n) sqrt(k_t/k_n) = (2/sqrt6) sqrt(6 G*/E*) = 2 sqrt(G*/E*): one square
-  /// root per contact instead of two.
+  /// gamma_t / gamma_n = (c_t/c_n) sqrt(k_t/k_n) = (2/sqrt6) sqrt(6 G*/E*) = 2 sqrt(G*/E*): one
+  /// square root per contact instead of two.
   static double tangential_damping_ratio(const Params& p) { return p.t_ratio; }
 
   static Params from(const MaterialPair& m) {

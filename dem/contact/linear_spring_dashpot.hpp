@@ -8,16 +8,17 @@
 
 namespace lbdem::dem {
 
-/// F_n = k delta + gamma v_n, gamma = 2 |beta(e)| sqrt(m* k). The force is not clipped at zero, so the
-/// contact ends when delta returns to 0 and the restitution is exactly e (linear ODE, closed form).
-/// Tangential spring k_t = kt_ratio k (2/7 gives equal normal and tangential periods for a sphere).
+/// F_n = k delta + gamma v_n, gamma = 2 |beta(e)| sqrt(m* k). The force is not clipped at zero, so
+/// the contact ends when delta returns to 0 and the restitution is exactly e (linear ODE, closed
+/// form). Tangential spring k_t = kt_ratio k (2/7 gives equal normal and tangential periods for a
+/// sphere).
 struct LinearSpringDashpot {
   struct Params {
-    double k;           // normal stiffness [N/m]
-    double c_damp;      // gamma / sqrt(m* k) [-]
-    double kt_ratio;    // k_t / k_n [-]
-    double gamma_abs;   // if > 0: absolute damping coefficient [N s/m] overriding c_damp
-    double t_ratio;     // gamma_t / gamma_n = sqrt(k_t / k_n) [-]
+    double k;          // normal stiffness [N/m]
+    double c_damp;     // gamma / sqrt(m* k) [-]
+    double kt_ratio;   // k_t / k_n [-]
+    double gamma_abs;  // if > 0: absolute damping coefficient [N s/m] overriding c_damp
+    double t_ratio;    // gamma_t / gamma_n = sqrt(k_t / k_n) [-]
   };
   static constexpr std::string_view name = "linear";
 
@@ -35,7 +36,8 @@ struct LinearSpringDashpot {
   static double tangential_damping_ratio(const Params& p) { return p.t_ratio; }
 
   static Params from(const MaterialPair& m, double kt_ratio) {
-    return {m.stiffness, 2.0 * std::abs(restitution_beta(m.restitution)), kt_ratio, 0.0, std::sqrt(kt_ratio)};
+    return {m.stiffness, 2.0 * std::abs(restitution_beta(m.restitution)), kt_ratio, 0.0,
+            std::sqrt(kt_ratio)};
   }
 };
 

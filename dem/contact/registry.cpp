@@ -20,7 +20,8 @@ V pick(const std::string& name, const std::vector<std::string>& names, const cha
   V v;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     ((I == static_cast<std::size_t>(it - names.begin()) ? (v.template emplace<I>(), 0) : 0), ...);
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
   return v;
 }
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
 // Name -> law table (STYLE §2 "registration"): the config names a normal law, a rolling model and a
-// cohesion model; make_law_table() instantiates the one composed ContactLaw and its per-material-pair
-// parameters. The solver dispatches once per step with std::visit.
+// cohesion model; make_law_table() instantiates the one composed ContactLaw and its
+// per-material-pair parameters. The solver dispatches once per step with std::visit.
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -61,14 +61,18 @@ using CohesionVariant = std::variant<NoCohesion, VanDerWaals>;
 template <class N, class R, class C>
 using TableOf = LawTable<ContactLaw<N, R, C>>;
 
-using AnyLawTable = std::variant<
-    TableOf<LinearSpringDashpot, NoRolling, NoCohesion>, TableOf<LinearSpringDashpot, NoRolling, VanDerWaals>,
-    TableOf<LinearSpringDashpot, ConstantTorqueRolling, NoCohesion>,
-    TableOf<LinearSpringDashpot, ConstantTorqueRolling, VanDerWaals>,
-    TableOf<LinearSpringDashpot, EpsdRolling, NoCohesion>, TableOf<LinearSpringDashpot, EpsdRolling, VanDerWaals>,
-    TableOf<HertzMindlin, NoRolling, NoCohesion>, TableOf<HertzMindlin, NoRolling, VanDerWaals>,
-    TableOf<HertzMindlin, ConstantTorqueRolling, NoCohesion>, TableOf<HertzMindlin, ConstantTorqueRolling, VanDerWaals>,
-    TableOf<HertzMindlin, EpsdRolling, NoCohesion>, TableOf<HertzMindlin, EpsdRolling, VanDerWaals>>;
+using AnyLawTable = std::variant<TableOf<LinearSpringDashpot, NoRolling, NoCohesion>,
+                                 TableOf<LinearSpringDashpot, NoRolling, VanDerWaals>,
+                                 TableOf<LinearSpringDashpot, ConstantTorqueRolling, NoCohesion>,
+                                 TableOf<LinearSpringDashpot, ConstantTorqueRolling, VanDerWaals>,
+                                 TableOf<LinearSpringDashpot, EpsdRolling, NoCohesion>,
+                                 TableOf<LinearSpringDashpot, EpsdRolling, VanDerWaals>,
+                                 TableOf<HertzMindlin, NoRolling, NoCohesion>,
+                                 TableOf<HertzMindlin, NoRolling, VanDerWaals>,
+                                 TableOf<HertzMindlin, ConstantTorqueRolling, NoCohesion>,
+                                 TableOf<HertzMindlin, ConstantTorqueRolling, VanDerWaals>,
+                                 TableOf<HertzMindlin, EpsdRolling, NoCohesion>,
+                                 TableOf<HertzMindlin, EpsdRolling, VanDerWaals>>;
 
 /// Builds the table for the named laws; materials double as wall materials (walls name one).
 /// Throws InputError (key "contact.normal" etc.) for unknown names.

@@ -1,8 +1,9 @@
 #pragma once
 // Rolling resistance models (Ai, Chen, Rotter & Ooi 2011, Powder Technol. 206:269).
 // Convention: the torque arm is r_arm = arm_factor * R*; arm_factor = 1 is LIGGGHTS' and the
-// default here, MercuryDPM's rolling friction uses 2 R* (arm_factor = 2). Torques act on the relative
-// rolling rotation omega_r = (omega_i - omega_j) projected onto the tangent plane (twisting excluded).
+// default here, MercuryDPM's rolling friction uses 2 R* (arm_factor = 2). Torques act on the
+// relative rolling rotation omega_r = (omega_i - omega_j) projected onto the tangent plane
+// (twisting excluded).
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -17,9 +18,9 @@ struct NoRolling {
   static constexpr bool active = false;
 };
 
-/// Model A (constant directional torque): M = -mu_r r_arm F_n omega_r/|omega_r|. The torque is limited to
-/// the value that stops omega_r within one step (I* |omega_r| / dt), so it cannot reverse the rotation
-/// and chatter around rest.
+/// Model A (constant directional torque): M = -mu_r r_arm F_n omega_r/|omega_r|. The torque is
+/// limited to the value that stops omega_r within one step (I* |omega_r| / dt), so it cannot
+/// reverse the rotation and chatter around rest.
 struct ConstantTorqueRolling {
   struct Params {
     double mu_r;        // rolling friction coefficient [-]
@@ -28,8 +29,9 @@ struct ConstantTorqueRolling {
   static constexpr std::string_view name = "constant_torque";
   static constexpr bool active = true;
 
-  static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r, const Vec3& /*half*/,
-                    double fn, double /*k_n*/, double dt, ContactHistory& /*h*/, ContactForce& out) {
+  static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r,
+                    const Vec3& /*half*/, double fn, double /*k_n*/, double dt,
+                    ContactHistory& /*h*/, ContactForce& out) {
     const double w = omega_r.norm();
     if (w <= 0 || fn <= 0) return;
     const double m = std::min(p.mu_r * p.arm_factor * g.r_star * fn, g.i_star * w / dt);
@@ -74,9 +76,11 @@ struct EpsdRolling {
       m *= cap / mm;
       const Vec3 theta_trial = h.theta;
       h.theta = kr > 0 ? Vec3(-m / kr) : Vec3::Zero();
-      out.e_rolling += 0.5 * (m_start + cap) * (theta_trial - h.theta).norm();  // torque x plastic rotation
+      out.e_rolling +=
+          0.5 * (m_start + cap) * (theta_trial - h.theta).norm();  // torque x plastic rotation
     }
-    out.e_stiffness += 0.5 * (kr - kr_old) * theta_start.dot(h.theta);  // as for the tangential spring
+    out.e_stiffness +=
+        0.5 * (kr - kr_old) * theta_start.dot(h.theta);  // as for the tangential spring
     out.m_roll = m;
     out.u_elastic += 0.5 * kr * h.theta.squaredNorm();
   }

@@ -1,5 +1,6 @@
 #pragma once
-// Cohesion laws. They act beyond the point of touch, so the neighbour search adds `range` to the cut-off.
+// Cohesion laws. They act beyond the point of touch, so the neighbour search adds `range` to the
+// cut-off.
 #include <algorithm>
 #include <string_view>
 
@@ -11,10 +12,11 @@ struct NoCohesion {
   static constexpr bool active = false;
 };
 
-/// Van der Waals attraction of two spheres (Hamaker 1937): F = A R* / (6 h^2), with the gap h clamped
-/// to h >= h_min (in contact h = h_min, so the pull stays finite) and F = 0 beyond h_max. Equal spheres
-/// of diameter d give A d / (24 h^2). Potential (zero at h_max so energy is continuous there):
-/// U = -A R*/6 (1/h - 1/h_max) for h_min <= h <= h_max, continued linearly with slope F(h_min) below.
+/// Van der Waals attraction of two spheres (Hamaker 1937): F = A R* / (6 h^2), with the gap h
+/// clamped to h >= h_min (in contact h = h_min, so the pull stays finite) and F = 0 beyond h_max.
+/// Equal spheres of diameter d give A d / (24 h^2). Potential (zero at h_max so energy is
+/// continuous there): U = -A R*/6 (1/h - 1/h_max) for h_min <= h <= h_max, continued linearly with
+/// slope F(h_min) below.
 struct VanDerWaals {
   struct Params {
     double hamaker;  // A [J]

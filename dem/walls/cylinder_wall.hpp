@@ -9,11 +9,11 @@
 namespace lbdem::dem {
 
 struct CylinderWall {
-  Vec3 origin = Vec3::Zero();  // a point on the axis [m]
-  Vec3 axis = Vec3::UnitZ();   // unit axis [-]
-  double radius = 1;           // [m]
-  bool inside = true;          // particles inside the cylinder
-  double omega = 0;            // angular velocity about the axis [rad/s]
+  Vec3 origin = Vec3::Zero();                            // a point on the axis [m]
+  Vec3 axis = Vec3::UnitZ();                             // unit axis [-]
+  double radius = 1;                                     // [m]
+  bool inside = true;                                    // particles inside the cylinder
+  double omega = 0;                                      // angular velocity about the axis [rad/s]
   double lo = -std::numeric_limits<double>::infinity();  // extent along the axis from origin [m]
   double hi = std::numeric_limits<double>::infinity();
 };

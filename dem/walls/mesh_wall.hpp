@@ -31,7 +31,8 @@ struct MeshWall {
 
   void update(double t) {
     current.resize(mesh.vertices.size());
-    for (std::size_t k = 0; k < current.size(); ++k) current[k] = motion.position(mesh.vertices[k], t);
+    for (std::size_t k = 0; k < current.size(); ++k)
+      current[k] = motion.position(mesh.vertices[k], t);
   }
   MeshClosest closest(int tri, const Vec3& x) const {
     const auto& v = mesh.triangles[tri];

@@ -5,13 +5,13 @@
 namespace lbdem::dem {
 
 struct PlaneWall {
-  Vec3 point = Vec3::Zero();       // a point of the plane at t = 0 [m]
-  Vec3 normal = Vec3::UnitZ();     // unit normal pointing into the particle side [-]
-  Vec3 velocity = Vec3::Zero();    // translation [m/s]
+  Vec3 point = Vec3::Zero();     // a point of the plane at t = 0 [m]
+  Vec3 normal = Vec3::UnitZ();   // unit normal pointing into the particle side [-]
+  Vec3 velocity = Vec3::Zero();  // translation [m/s]
 };
 
-/// Where a sphere centre sees a wall: unit normal from the centre towards the wall, distance from the
-/// centre to the surface, the surface point and the wall's velocity there.
+/// Where a sphere centre sees a wall: unit normal from the centre towards the wall, distance from
+/// the centre to the surface, the surface point and the wall's velocity there.
 struct WallPoint {
   Vec3 n;
   double dist;

@@ -21,8 +21,8 @@ struct Wall {
   Vec3 torque = Vec3::Zero();  // [N m]
 };
 
-/// Where an analytic wall (plane or cylinder) is seen from x at time t. Mesh walls have per-triangle
-/// contacts (MeshWall::closest) and must not be passed here.
+/// Where an analytic wall (plane or cylinder) is seen from x at time t. Mesh walls have
+/// per-triangle contacts (MeshWall::closest) and must not be passed here.
 inline WallPoint analytic_wall_point(const Wall& w, const Vec3& x, double t) {
   return std::visit(
       [&](const auto& shape) -> WallPoint {
@@ -46,7 +46,7 @@ struct WallContactList {
   std::vector<Vec3> force;        // on the particle [N]
   std::vector<Vec3> wall_torque;  // on the wall about its torque_origin [N m]
   std::vector<Vec3> contact_point;
-  std::vector<double> power;      // F_on_particle . v_wall [W]
+  std::vector<double> power;         // F_on_particle . v_wall [W]
   std::vector<std::uint32_t> first;  // entries of particle p: [first[p], first[p+1])
 
   std::size_t size() const { return particle.size(); }

@@ -31,19 +31,23 @@ BoxScenario::BoxScenario(const Config& cfg) {
   s.domain.hi = box.require_vec3("hi");
   for (int a = 0; a < 3; ++a)
     if (!(s.domain.hi[a] > s.domain.lo[a]))
-      throw InputError(box.path("hi"), vec_text(s.domain.hi), "not above box.lo along " + std::string(kAxes[a]),
+      throw InputError(box.path("hi"), vec_text(s.domain.hi),
+                       "not above box.lo along " + std::string(kAxes[a]),
                        "give hi > lo on every axis");
   const auto mats = read_materials(cfg);
   const std::string wall_mat_name = box.get_string("wall_material", mats.front().name);
   const int wall_mat = material_index(mats, wall_mat_name, box.path("wall_material"));
   std::vector<dem::Wall> walls;
   for (int a = 0; a < 3; ++a) {
-    const std::string lo_key = std::string(kAxes[a]) + "_lo", hi_key = std::string(kAxes[a]) + "_hi";
+    const std::string lo_key = std::string(kAxes[a]) + "_lo",
+                      hi_key = std::string(kAxes[a]) + "_hi";
     const std::string lo = box.get_choice(lo_key, "wall", {"wall", "periodic", "open"});
-    const std::string hi = box.get_choice(hi_key, a == 2 ? "open" : "wall", {"wall", "periodic", "open"});
+    const std::string hi =
+        box.get_choice(hi_key, a == 2 ? "open" : "wall", {"wall", "periodic", "open"});
     if ((lo == "periodic") != (hi == "periodic"))
-      throw InputError(box.path(lo == "periodic" ? hi_key : lo_key), "\"" + (lo == "periodic" ? hi : lo) + "\"",
-                       "periodic faces come in pairs", "make both " + lo_key + " and " + hi_key + " periodic");
+      throw InputError(box.path(lo == "periodic" ? hi_key : lo_key),
+                       "\"" + (lo == "periodic" ? hi : lo) + "\"", "periodic faces come in pairs",
+                       "make both " + lo_key + " and " + hi_key + " periodic");
     s.domain.periodic[a] = lo == "periodic";
     for (int side = 0; side < 2; ++side) {
       if ((side ? hi : lo) != "wall") continue;
@@ -81,8 +85,9 @@ BoxScenario::BoxScenario(const Config& cfg) {
            p.require("radius", Range::positive("give the particle radius in m")),
            material_index(mats, p.get_string("material", mats.front().name), p.path("material"))};
     if (!inside(q.x, 0, s.domain.lo, s.domain.hi))
-      throw InputError(p.path("position"), vec_text(q.x), "outside the box " + vec_text(s.domain.lo) + " - " +
-                       vec_text(s.domain.hi), "move the particle into the box or enlarge box.lo/box.hi");
+      throw InputError(p.path("position"), vec_text(q.x),
+                       "outside the box " + vec_text(s.domain.lo) + " - " + vec_text(s.domain.hi),
+                       "move the particle into the box or enlarge box.lo/box.hi");
     init.push_back(q);
     placed.push_back({q.x, q.r});
   }
@@ -90,15 +95,18 @@ BoxScenario::BoxScenario(const Config& cfg) {
     dem::FillRequest req;
     req.lo = f.get_vec3("lo", s.domain.lo);
     req.hi = f.get_vec3("hi", s.domain.hi);
-    if (!inside(req.lo, 0, s.domain.lo, s.domain.hi) || !inside(req.hi, 0, s.domain.lo, s.domain.hi))
-      throw InputError(f.path("lo"), vec_text(req.lo) + " - " + vec_text(req.hi), "fill region outside the box",
+    if (!inside(req.lo, 0, s.domain.lo, s.domain.hi) ||
+        !inside(req.hi, 0, s.domain.lo, s.domain.hi))
+      throw InputError(f.path("lo"), vec_text(req.lo) + " - " + vec_text(req.hi),
+                       "fill region outside the box",
                        "keep the fill region inside box.lo - box.hi");
     req.count = f.get_int("count", 0, Range::non_negative());
     req.mass = f.get("mass", 0.0, Range::non_negative());
     if ((req.count > 0) == (req.mass > 0))
-      throw InputError(f.path("count"), std::to_string(req.count), "give exactly one of count and mass",
-                       "set count = N or mass = M [kg]");
-    const int mat = material_index(mats, f.get_string("material", mats.front().name), f.path("material"));
+      throw InputError(f.path("count"), std::to_string(req.count),
+                       "give exactly one of count and mass", "set count = N or mass = M [kg]");
+    const int mat =
+        material_index(mats, f.get_string("material", mats.front().name), f.path("material"));
     req.density = mats[mat].density;
     req.radius = read_radius(f.section("radius"));
     const Vec3 v = f.get_vec3("velocity", Vec3::Zero());
@@ -109,7 +117,8 @@ BoxScenario::BoxScenario(const Config& cfg) {
     if (short_count || (req.mass > 0 && m < req.mass))
       throw InputError(f.path(req.count > 0 ? "count" : "mass"),
                        req.count > 0 ? std::to_string(req.count) : to_text(req.mass),
-                       "only " + std::to_string(got.size()) + " particles fit in the fill region without overlap",
+                       "only " + std::to_string(got.size()) +
+                           " particles fit in the fill region without overlap",
                        "enlarge the fill region or ask for fewer particles");
     for (const auto& g : got) init.push_back({g.x, v, Vec3::Zero(), g.r, mat}), placed.push_back(g);
   }
@@ -121,11 +130,14 @@ BoxScenario::BoxScenario(const Config& cfg) {
   if (inflow_.on) {
     inflow_.lo = inflow.require_vec3("lo");
     inflow_.hi = inflow.require_vec3("hi");
-    inflow_.mass_rate = inflow.require("mass_rate", Range::positive("give the inflow mass rate in kg/s"));
+    inflow_.mass_rate =
+        inflow.require("mass_rate", Range::positive("give the inflow mass rate in kg/s"));
     inflow_.start = inflow.get("start", 0.0, Range::non_negative());
     inflow_.end = inflow.get("end", 1e300, Range::non_negative());
-    inflow_.period = inflow.get("insert_interval", 1e-3, Range::positive("give the insertion interval in s"));
-    inflow_.material = material_index(mats, inflow.get_string("material", mats.front().name), inflow.path("material"));
+    inflow_.period =
+        inflow.get("insert_interval", 1e-3, Range::positive("give the insertion interval in s"));
+    inflow_.material = material_index(mats, inflow.get_string("material", mats.front().name),
+                                      inflow.path("material"));
     inflow_.velocity = inflow.get_vec3("velocity", Vec3::Zero());
     inflow_.radius = read_radius(inflow.section("radius"));
     r_min = std::min(r_min, inflow_.radius.smallest());
@@ -137,14 +149,16 @@ BoxScenario::BoxScenario(const Config& cfg) {
     outlet_.hi = outlet.require_vec3("hi");
   }
   if (init.empty() && !inflow_.on)
-    throw InputError("fill", "", "no particles", "add a [[fill]] or [[particle]] table or an [inflow]");
+    throw InputError("fill", "", "no particles",
+                     "add a [[fill]] or [[particle]] table or an [inflow]");
 
   const Config dcfg = cfg.section("dem");
   std::vector<int> wall_mats;
   for (const auto& w : walls) wall_mats.push_back(w.material);
   step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min);
   s.dt = step_.dt;
-  s.skin = dcfg.get("skin", 0.2 * r_min, Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
+  s.skin = dcfg.get("skin", 0.2 * r_min,
+                    Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
   s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
   out_ = OutputSettings::from(run, cfg.section("output"));
 
@@ -161,14 +175,15 @@ BoxScenario::BoxScenario(const Config& cfg) {
 }
 
 void BoxScenario::banner(Log& log) const {
-  dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time, step_.scales.rayleigh_time,
-             step_.scales.where);
+  dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
+             step_.scales.rayleigh_time, step_.scales.where);
 }
 
 void BoxScenario::before_step(dem::DemSolver& s) {
   const double t = s.time();
   if (inflow_.on && t >= inflow_.start && t <= inflow_.end) {
-    const std::int64_t every = std::max<std::int64_t>(1, std::llround(inflow_.period / s.settings().dt));
+    const std::int64_t every =
+        std::max<std::int64_t>(1, std::llround(inflow_.period / s.settings().dt));
     if (s.steps() % every == 0) {
       const double target = inflow_.mass_rate * (std::min(t, inflow_.end) - inflow_.start);
       if (target > inflow_.inserted) {

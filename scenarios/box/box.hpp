@@ -1,8 +1,8 @@
 #pragma once
 // The general, config-driven DEM scenario: a box whose faces are walls, periodic or open; gravity;
-// materials; a contact law; particles from explicit lists and random fills; optional plane, cylinder
-// and STL walls with motion; an optional inflow (mass rate) and outlet. Quick experiments, the physics
-// tests and the benchmarks are all set up through it.
+// materials; a contact law; particles from explicit lists and random fills; optional plane,
+// cylinder and STL walls with motion; an optional inflow (mass rate) and outlet. Quick experiments,
+// the physics tests and the benchmarks are all set up through it.
 #include <memory>
 #include <random>
 #include <string>
@@ -23,7 +23,8 @@ class BoxScenario {
   void banner(Log& log) const;
   int run(const RunContext& ctx);
   dem::DemSolver& solver() { return *solver_; }
-  /// Inflow and outlet, called by the driver before every step (public for tests that step by hand).
+  /// Inflow and outlet, called by the driver before every step (public for tests that step by
+  /// hand).
   void before_step(dem::DemSolver& s);
   const OutputSettings& output() const { return out_; }
 

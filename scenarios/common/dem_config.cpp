@@ -12,27 +12,36 @@ std::vector<dem::Material> read_materials(const Config& cfg) {
     dem::Material x;
     x.name = m.get_string("name", "material" + std::to_string(out.size()));
     x.density = m.get("density", x.density, Range::positive("give the solid density in kg/m^3"));
-    x.youngs_modulus = m.get("youngs_modulus", x.youngs_modulus, Range::positive("give Young's modulus in Pa"));
-    x.poisson_ratio = m.get("poisson_ratio", x.poisson_ratio, {-1, 0.5, true, true, "give a Poisson ratio in (-1, 0.5)"});
-    x.stiffness = m.get("stiffness", x.stiffness, Range::positive("give the linear normal stiffness in N/m"));
-    x.restitution = m.get("restitution", x.restitution, {0, 1, true, false, "give a restitution in (0, 1]"});
+    x.youngs_modulus =
+        m.get("youngs_modulus", x.youngs_modulus, Range::positive("give Young's modulus in Pa"));
+    x.poisson_ratio = m.get("poisson_ratio", x.poisson_ratio,
+                            {-1, 0.5, true, true, "give a Poisson ratio in (-1, 0.5)"});
+    x.stiffness =
+        m.get("stiffness", x.stiffness, Range::positive("give the linear normal stiffness in N/m"));
+    x.restitution =
+        m.get("restitution", x.restitution, {0, 1, true, false, "give a restitution in (0, 1]"});
     x.friction = m.get("friction", x.friction, Range::non_negative("give a sliding friction >= 0"));
-    x.rolling_friction = m.get("rolling_friction", x.rolling_friction, Range::non_negative("give a rolling friction >= 0"));
-    x.hamaker = m.get("hamaker", x.hamaker, Range::non_negative("give a Hamaker constant in J (>= 0)"));
+    x.rolling_friction = m.get("rolling_friction", x.rolling_friction,
+                               Range::non_negative("give a rolling friction >= 0"));
+    x.hamaker =
+        m.get("hamaker", x.hamaker, Range::non_negative("give a Hamaker constant in J (>= 0)"));
     out.push_back(x);
   }
   if (out.empty())
-    throw InputError("materials", "", "no [[materials]] table", "add at least one [[materials]] with a name");
+    throw InputError("materials", "", "no [[materials]] table",
+                     "add at least one [[materials]] with a name");
   return out;
 }
 
-int material_index(const std::vector<dem::Material>& mats, const std::string& name, const std::string& key) {
+int material_index(const std::vector<dem::Material>& mats, const std::string& name,
+                   const std::string& key) {
   std::vector<std::string> names;
   for (std::size_t k = 0; k < mats.size(); ++k) {
     if (mats[k].name == name) return static_cast<int>(k);
     names.push_back(mats[k].name);
   }
-  throw InputError(key, "\"" + name + "\"", "no such material", "did you mean \"" + nearest(name, names) + "\"?");
+  throw InputError(key, "\"" + name + "\"", "no such material",
+                   "did you mean \"" + nearest(name, names) + "\"?");
 }
 
 dem::ContactSettings read_contact(const Config& c) {
@@ -40,14 +49,20 @@ dem::ContactSettings read_contact(const Config& c) {
   s.normal = c.get_choice("normal", s.normal, dem::kNormalLaws);
   s.rolling = c.get_choice("rolling", s.rolling, dem::kRollingModels);
   s.cohesion = c.get_choice("cohesion", s.cohesion, dem::kCohesionModels);
-  s.rolling_arm_factor = c.get("rolling_arm_factor", s.rolling_arm_factor, Range::positive("torque arm / R*, e.g. 1 (LIGGGHTS) or 2 (MercuryDPM)"));
-  s.kt_ratio = c.get("tangential_stiffness_ratio", s.kt_ratio, Range::positive("k_t/k_n, e.g. 2/7"));
+  s.rolling_arm_factor =
+      c.get("rolling_arm_factor", s.rolling_arm_factor,
+            Range::positive("torque arm / R*, e.g. 1 (LIGGGHTS) or 2 (MercuryDPM)"));
+  s.kt_ratio =
+      c.get("tangential_stiffness_ratio", s.kt_ratio, Range::positive("k_t/k_n, e.g. 2/7"));
   s.tangential_damping = c.get_bool("tangential_damping", s.tangential_damping);
   if (s.cohesion != "none") {
-    s.h_min = c.get("h_min", s.h_min, Range::positive("give the minimum separation in m, e.g. 4e-10"));
-    s.h_max = c.get("h_max", s.h_max, Range::positive("give the cohesion cut-off in m, e.g. 0.1 d"));
+    s.h_min =
+        c.get("h_min", s.h_min, Range::positive("give the minimum separation in m, e.g. 4e-10"));
+    s.h_max =
+        c.get("h_max", s.h_max, Range::positive("give the cohesion cut-off in m, e.g. 0.1 d"));
     if (s.h_max <= s.h_min)
-      throw InputError(c.path("h_max"), to_text(s.h_max), "must exceed h_min = " + to_text(s.h_min), "raise h_max");
+      throw InputError(c.path("h_max"), to_text(s.h_max), "must exceed h_min = " + to_text(s.h_min),
+                       "raise h_max");
   }
   return s;
 }
@@ -60,7 +75,8 @@ dem::RadiusDistribution read_radius(const Config& c) {
   } else {
     r.min = c.require("min", Range::positive("give the smallest radius in m"));
     r.max = c.require("max", Range::positive("give the largest radius in m"));
-    if (r.max < r.min) throw InputError(c.path("max"), to_text(r.max), "below min", "give max >= min");
+    if (r.max < r.min)
+      throw InputError(c.path("max"), to_text(r.max), "below min", "give max >= min");
     if (r.kind == "lognormal") {
       r.median = c.require("median", Range::positive("give the median radius in m"));
       r.sigma = c.get("sigma", r.sigma, Range::positive("give the standard deviation of ln r"));
@@ -74,25 +90,29 @@ dem::CollisionSettings read_collisions(const Config& c) {
   s.rows = c.get_bool("rows", s.rows);
   s.rows_t0 = c.get("rows_start", s.rows_t0, Range::non_negative());
   s.rows_t1 = c.get("rows_end", 1e300, Range::non_negative());
-  s.row_budget = c.get_int("row_budget", s.row_budget, Range::positive("give the most rows to keep"));
+  s.row_budget =
+      c.get_int("row_budget", s.row_budget, Range::positive("give the most rows to keep"));
   s.grid_cells = static_cast<int>(c.get_int("grid_cells", s.grid_cells, Range::closed(1, 512)));
   return s;
 }
 
-StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs, const std::vector<dem::Material>& mats,
+StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
+                            const std::vector<dem::Material>& mats,
                             const std::vector<int>& wall_mats, double r_min) {
   StepChoice c{};
-  c.impact_speed = d.get("impact_speed", 1.0, Range::positive("give the characteristic impact speed in m/s"));
+  c.impact_speed =
+      d.get("impact_speed", 1.0, Range::positive("give the characteristic impact speed in m/s"));
   c.scales = dem::time_scales(cs, mats, wall_mats, r_min, c.impact_speed);
   const double tc = c.scales.contact_time;
   const double per = d.get("steps_per_contact", 50.0, Range::closed(1, 1e6));
   c.dt = d.get("dt", tc / per, Range::positive("give the time step in s"));
   const bool force = d.get_bool("force_dt", false);
   if (c.dt > tc / 20 && !force)
-    throw InputError(d.path("dt"), to_text(c.dt),
-                     "above t_c/20 = " + to_text(tc / 20) + " s (contact time t_c = " + to_text(tc) + " s for " +
-                         c.scales.where + " at " + to_text(c.impact_speed) + " m/s)",
-                     "lower dem.dt, or set dem.force_dt = true to accept fewer than 20 steps per contact");
+    throw InputError(
+        d.path("dt"), to_text(c.dt),
+        "above t_c/20 = " + to_text(tc / 20) + " s (contact time t_c = " + to_text(tc) + " s for " +
+            c.scales.where + " at " + to_text(c.impact_speed) + " m/s)",
+        "lower dem.dt, or set dem.force_dt = true to accept fewer than 20 steps per contact");
   return c;
 }
 
@@ -100,12 +120,14 @@ dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
   dem::Wall out;
   const std::string kind = w.get_choice("kind", "plane", {"plane", "cylinder", "stl"});
   out.name = w.get_string("name", kind);
-  out.material = material_index(mats, w.get_string("material", mats.front().name), w.path("material"));
+  out.material =
+      material_index(mats, w.get_string("material", mats.front().name), w.path("material"));
   if (kind == "plane") {
     dem::PlaneWall p;
     p.point = w.require_vec3("point");
     p.normal = w.require_vec3("normal");
-    if (p.normal.norm() == 0) throw InputError(w.path("normal"), "[0, 0, 0]", "zero normal", "give a non-zero normal");
+    if (p.normal.norm() == 0)
+      throw InputError(w.path("normal"), "[0, 0, 0]", "zero normal", "give a non-zero normal");
     p.normal.normalize();
     p.velocity = w.get_vec3("velocity", Vec3::Zero());
     out.shape = p;
@@ -124,7 +146,8 @@ dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
   } else {
     dem::MeshWall m;
     const std::string file = w.get_string("file", "");
-    if (file.empty()) throw InputError(w.path("file"), "", "missing", "give the path of an STL file");
+    if (file.empty())
+      throw InputError(w.path("file"), "", "missing", "give the path of an STL file");
     const double scale = w.get("scale", 1.0, Range::positive("e.g. 1e-3 for a file in mm"));
     m.mesh = dem::TriangleMesh::from_stl(file, scale, w.path("file"));
     const Vec3 shift = w.get_vec3("translate", Vec3::Zero());

@@ -1,6 +1,7 @@
 #pragma once
-// Reading the DEM parts of a config that every DEM scenario shares: [[materials]], [contact], [dem],
-// [output.collisions], particle fills and lists, and [[walls]] tables (plane, cylinder, stl).
+// Reading the DEM parts of a config that every DEM scenario shares: [[materials]], [contact],
+// [dem], [output.collisions], particle fills and lists, and [[walls]] tables (plane, cylinder,
+// stl).
 #include <random>
 #include <string>
 #include <vector>
@@ -13,20 +14,21 @@
 namespace lbdem::scenarios {
 
 std::vector<dem::Material> read_materials(const Config& cfg);
-int material_index(const std::vector<dem::Material>& mats, const std::string& name, const std::string& key);
+int material_index(const std::vector<dem::Material>& mats, const std::string& name,
+                   const std::string& key);
 dem::ContactSettings read_contact(const Config& c);
 dem::RadiusDistribution read_radius(const Config& c);
 dem::CollisionSettings read_collisions(const Config& c);
 
-/// [dem] time step: dt given, or t_c / steps_per_contact. A dt above t_c/20 at the impact speed is an
-/// error unless force_dt = true (the seed studies run at t_c/9 to t_c/16 and force it).
+/// [dem] time step: dt given, or t_c / steps_per_contact. A dt above t_c/20 at the impact speed is
+/// an error unless force_dt = true (the seed studies run at t_c/9 to t_c/16 and force it).
 struct StepChoice {
   double dt, impact_speed;
   dem::TimeScales scales;
 };
 StepChoice choose_time_step(const Config& dem_cfg, const dem::ContactSettings& cs,
-                            const std::vector<dem::Material>& mats, const std::vector<int>& wall_mats,
-                            double r_min);
+                            const std::vector<dem::Material>& mats,
+                            const std::vector<int>& wall_mats, double r_min);
 
 /// Reads one [[walls]] table into a wall (kind = plane | cylinder | stl).
 dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats);

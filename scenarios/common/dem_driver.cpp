@@ -19,17 +19,21 @@ namespace {
 // Set by SIGINT/SIGTERM: the loop then writes a checkpoint at the current step and stops, so an
 // interrupted run loses nothing and resumes exactly.
 volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+}
 }  // namespace
-
 
 OutputSettings OutputSettings::from(const Config& run, const Config& out) {
   OutputSettings o;
   o.end_time = run.require("end_time", Range::positive("give the simulated end time in seconds"));
-  o.interval = out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
-  o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10, Range::positive("give the snapshot interval in s"));
-  o.checkpoint_interval = out.get("checkpoint_interval", o.end_time / 4,
-                                  Range::non_negative("give the checkpoint interval in s (0: only at the end)"));
+  o.interval =
+      out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
+  o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10,
+                                Range::positive("give the snapshot interval in s"));
+  o.checkpoint_interval =
+      out.get("checkpoint_interval", o.end_time / 4,
+              Range::non_negative("give the checkpoint interval in s (0: only at the end)"));
   return o;
 }
 
@@ -46,20 +50,38 @@ DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hoo
 }
 
 namespace {
-const std::vector<std::string> kColumns = {
-    "time_s", "particles", "kinetic_energy_J", "kinetic_translational_J", "kinetic_rotational_J",
-    "potential_energy_J", "elastic_energy_J", "dissipated_normal_damping_J", "dissipated_tangential_damping_J",
-    "dissipated_sliding_J", "dissipated_rolling_J", "stiffness_change_J", "wall_work_J",
-    "energy_injected_J", "energy_balance_error_J", "contacts_pp", "contacts_pw", "collisions_pp",
-    "collisions_pw", "collision_rate_pp_per_s", "collision_rate_pw_per_s", "mass_removed_kg",
-    "neighbour_rebuilds"};
+const std::vector<std::string> kColumns = {"time_s",
+                                           "particles",
+                                           "kinetic_energy_J",
+                                           "kinetic_translational_J",
+                                           "kinetic_rotational_J",
+                                           "potential_energy_J",
+                                           "elastic_energy_J",
+                                           "dissipated_normal_damping_J",
+                                           "dissipated_tangential_damping_J",
+                                           "dissipated_sliding_J",
+                                           "dissipated_rolling_J",
+                                           "stiffness_change_J",
+                                           "wall_work_J",
+                                           "energy_injected_J",
+                                           "energy_balance_error_J",
+                                           "contacts_pp",
+                                           "contacts_pw",
+                                           "collisions_pp",
+                                           "collisions_pw",
+                                           "collision_rate_pp_per_s",
+                                           "collision_rate_pw_per_s",
+                                           "mass_removed_kg",
+                                           "neighbour_rebuilds"};
 }  // namespace
 
 void DemDriver::write_row(double stored0, bool regular) {
   const auto e = solver_.energy();
   // Collisions begun per second since the previous row.
   const double span = solver_.time() - prev_t_;
-  const auto rate = [&](std::int64_t now, std::int64_t prev) { return span > 0 ? double(now - prev) / span : 0.0; };
+  const auto rate = [&](std::int64_t now, std::int64_t prev) {
+    return span > 0 ? double(now - prev) / span : 0.0;
+  };
   const double injected = e.injected(stored0);
   std::vector<double> row = {solver_.time(),
                              double(solver_.particles().size()),
@@ -125,8 +147,9 @@ void DemDriver::write_snapshot(const std::string& dir) {
   }
   master.commit();
   // ParaView: a temporal collection of polyvertex grids with radius and velocity attributes.
-  std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-                  "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  std::string x =
+      "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (int k = 0; k <= index; ++k) {
     std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", k);
     const H5In in(dir + "/" + name);
@@ -134,14 +157,17 @@ void DemDriver::write_snapshot(const std::string& dir) {
     const std::string N = std::to_string(n);
     char t[64];
     std::snprintf(t, sizeof t, "%.9g", snapshot_times_[k]);
-    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + std::string(t) + "\"/>\n";
+    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + std::string(t) +
+         "\"/>\n";
     x += "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\"/>\n";
     x += "    <Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"" + N +
-         " 3\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name + ":/position_m</DataItem></Geometry>\n";
+         " 3\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name +
+         ":/position_m</DataItem></Geometry>\n";
     const auto attr = [&](const char* a, const char* ds, bool vec) {
-      x += std::string("    <Attribute Name=\"") + a + "\" AttributeType=\"" + (vec ? "Vector" : "Scalar") +
-           "\" Center=\"Node\"><DataItem Dimensions=\"" + N + (vec ? " 3" : "") +
-           "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name + ":" + ds + "</DataItem></Attribute>\n";
+      x += std::string("    <Attribute Name=\"") + a + "\" AttributeType=\"" +
+           (vec ? "Vector" : "Scalar") + "\" Center=\"Node\"><DataItem Dimensions=\"" + N +
+           (vec ? " 3" : "") + "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name +
+           ":" + ds + "</DataItem></Attribute>\n";
     };
     attr("radius_m", "/radius_m", false);
     attr("velocity_m_per_s", "/velocity_m_per_s", true);
@@ -202,8 +228,8 @@ int DemDriver::run(const RunContext& ctx) {
       progress.finish();
       std::signal(SIGINT, old_int);
       std::signal(SIGTERM, old_term);
-      throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) + " at t = " +
-                        to_text(solver_.time()) + " s; checkpoint written");
+      throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) +
+                        " at t = " + to_text(solver_.time()) + " s; checkpoint written");
     }
     if (hooks_.before_step) hooks_.before_step(solver_);
     solver_.step();
@@ -228,13 +254,15 @@ int DemDriver::run(const RunContext& ctx) {
   progress.finish();
   const auto e = solver_.energy();
   const double injected = e.injected(stored0);
-  ctx.log->line("finished at t = " + to_text(solver_.time()) + " s after " + std::to_string(solver_.steps()) +
-                " steps; energy balance error " + to_text(e.stored() + e.dissipated() - injected) + " J of " +
+  ctx.log->line("finished at t = " + to_text(solver_.time()) + " s after " +
+                std::to_string(solver_.steps()) + " steps; energy balance error " +
+                to_text(e.stored() + e.dissipated() - injected) + " J of " +
                 to_text(injected - e.stored()) + " J dissipated or stored away");
   return 0;
 }
 
-void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double tr, const std::string& where) {
+void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double tr,
+                const std::string& where) {
   const auto& p = s.particles();
   double mass = 0, rmin = 1e300, rmax = 0;
   for (std::size_t k = 0; k < p.size(); ++k)
@@ -249,7 +277,8 @@ void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double t
   log.derived("time step dt", dt, "s");
   log.derived("dt / t_c", dt / tc, "", "(steps per contact " + to_text(tc / dt) + ")");
   log.derived("Rayleigh time", tr, "s", "(dt / T_R = " + to_text(dt / tr) + ")");
-  log.derived("neighbour skin", s.settings().skin, "m", "(" + to_text(s.settings().skin / (2 * rmin)) + " d_min)");
+  log.derived("neighbour skin", s.settings().skin, "m",
+              "(" + to_text(s.settings().skin / (2 * rmin)) + " d_min)");
   log.derived("interaction range beyond touch", s.interaction_range(), "m");
   log.derived("walls", double(s.walls().size()), "");
 }

@@ -31,10 +31,10 @@ struct OutputSettings {
 
 /// Scenario-specific parts of the loop.
 struct DriverHooks {
-  std::function<void(dem::DemSolver&)> before_step;           // inflow, outlet, motion, ...
-  std::vector<std::string> extra_columns;                      // extra timeseries.csv columns (SI)
+  std::function<void(dem::DemSolver&)> before_step;  // inflow, outlet, motion, ...
+  std::vector<std::string> extra_columns;            // extra timeseries.csv columns (SI)
   std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
-  std::function<void(H5Out&)> save;                            // scenario state into the checkpoint
+  std::function<void(H5Out&)> save;  // scenario state into the checkpoint
   std::function<void(const H5In&)> load;
 };
 

@@ -11,7 +11,7 @@ struct RunContext {
   bool resume = false;  // continue from dir/checkpoint.h5
   int threads = 1;
   Log* log = nullptr;
-  bool plots = true;    // make PNG plots at the end
+  bool plots = true;  // make PNG plots at the end
 };
 
 }  // namespace lbdem::scenarios

@@ -34,11 +34,15 @@ State run(int threads) {
   req.radius.kind = "uniform";
   req.radius.min = 0.8 * r;
   req.radius.max = r;
-  for (const auto& p : dem::random_fill(req, {}, rng)) sol.add_particle(p.x, Vec3(0.1, 0, -0.2), p.r, 0);
+  for (const auto& p : dem::random_fill(req, {}, rng))
+    sol.add_particle(p.x, Vec3(0.1, 0, -0.2), p.r, 0);
   for (int k = 0; k < 3000; ++k) sol.step();
   const auto e = sol.energy();
-  State st{sol.particles().x, sol.particles().v, sol.particles().omega,
-           {e.kinetic(), e.elastic, e.sliding, e.normal_damping}, sol.walls()[0].force};
+  State st{sol.particles().x,
+           sol.particles().v,
+           sol.particles().omega,
+           {e.kinetic(), e.elastic, e.sliding, e.normal_damping},
+           sol.walls()[0].force};
   // Ids order the comparison: the particle order itself is deterministic too, so compare as is.
   return st;
 }

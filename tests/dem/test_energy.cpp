@@ -84,9 +84,11 @@ double bed_budget_error(double steps_per_contact) {
 }
 }  // namespace
 
-TEST_CASE("elastic collisions: rms energy error per collision and its order in dt", "[dem][physics][energy]") {
+TEST_CASE("elastic collisions: rms energy error per collision and its order in dt",
+          "[dem][physics][energy]") {
   for (const std::string law : {"linear", "hertz_mindlin"}) {
-    const double e50 = rms_collision_error(law, 50, 1000), e100 = rms_collision_error(law, 100, 1000);
+    const double e50 = rms_collision_error(law, 50, 1000),
+                 e100 = rms_collision_error(law, 100, 1000);
     INFO(law << ": rms error at t_c/50: " << e50 << ", at t_c/100: " << e100);
     CHECK(e50 < 2e-4);  // the issue's bound at t_c/50
     // Third order (8x) for the linear law, 5/2 order (5.66x) for Hertz; each bound leaves ~5 % for
@@ -98,6 +100,6 @@ TEST_CASE("elastic collisions: rms energy error per collision and its order in d
 TEST_CASE("settling-bed energy budget closes at second order", "[dem][physics][energy][slow]") {
   const double e50 = bed_budget_error(50), e100 = bed_budget_error(100);
   INFO("budget error / dissipated at t_c/50: " << e50 << ", at t_c/100: " << e100);
-  CHECK(e50 < 2e-3);        // the issue's bound at t_c/50
+  CHECK(e50 < 2e-3);         // the issue's bound at t_c/50
   CHECK(e50 / e100 >= 3.0);  // second order gives 4; 3 allows for the chaotic bed's different paths
 }

@@ -1,6 +1,6 @@
 // A sphere on an incline (gravity tilted by theta against a floor): it rolls without slip, with
-// a = 5/7 g sin(theta), while tan(theta) < 3.5 mu, and slides with a = g (sin(theta) - mu cos(theta))
-// above (solid sphere, I = 2/5 m R^2).
+// a = 5/7 g sin(theta), while tan(theta) < 3.5 mu, and slides with a = g (sin(theta) - mu
+// cos(theta)) above (solid sphere, I = 2/5 m R^2).
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -32,14 +32,16 @@ double slope_acceleration(double theta, double mu, const std::string& law) {
 }
 }  // namespace
 
-TEST_CASE("sphere on an incline rolls below tan(theta) = 3.5 mu and slides above", "[dem][physics]") {
+TEST_CASE("sphere on an incline rolls below tan(theta) = 3.5 mu and slides above",
+          "[dem][physics]") {
   const double g = 9.81, mu = 0.2;
   for (const std::string law : {"hertz_mindlin", "linear"}) {
     INFO(law);
     // Rolling: tan(theta) = 0.35 < 3.5 mu = 0.7. 1 %: the tangential spring's oscillation after the
     // start has decayed (tangential damping) well within the 4 ms settling time.
     const double th_roll = std::atan(0.35);
-    CHECK(slope_acceleration(th_roll, mu, law) == Approx(5.0 / 7.0 * g * std::sin(th_roll)).epsilon(0.01));
+    CHECK(slope_acceleration(th_roll, mu, law) ==
+          Approx(5.0 / 7.0 * g * std::sin(th_roll)).epsilon(0.01));
     // Sliding: tan(theta) = 1.0 > 0.7.
     const double th_slide = std::atan(1.0);
     CHECK(slope_acceleration(th_slide, mu, law) ==

@@ -19,7 +19,8 @@ TEST_CASE("radius distributions have their analytic statistics", "[dem][insertio
     const double r = u.sample(rng);
     sum += r, lo = std::min(lo, r), hi = std::max(hi, r);
   }
-  // Mean of U(1e-4, 3e-4) is 2e-4; the standard error with n = 2e5 is 5.8e-5/sqrt(n) = 1.3e-7: 1e-6 is ~8 sigma.
+  // Mean of U(1e-4, 3e-4) is 2e-4; the standard error with n = 2e5 is 5.8e-5/sqrt(n) = 1.3e-7: 1e-6
+  // is ~8 sigma.
   CHECK(sum / n == Approx(2e-4).margin(1e-6));
   CHECK(lo >= 1e-4);
   CHECK(hi <= 3e-4);
@@ -29,7 +30,8 @@ TEST_CASE("radius distributions have their analytic statistics", "[dem][insertio
   std::vector<double> rs(n);
   for (auto& r : rs) r = g.sample(rng);
   std::nth_element(rs.begin(), rs.begin() + n / 2, rs.end());
-  // Median of a lognormal is exp(mu) = 2e-4; its sampling error ~ 1.25 sigma median / sqrt(n) = 1.7e-7.
+  // Median of a lognormal is exp(mu) = 2e-4; its sampling error ~ 1.25 sigma median / sqrt(n)
+  // = 1.7e-7.
   CHECK(rs[n / 2] == Approx(2e-4).margin(1.5e-6));
 }
 
@@ -50,7 +52,8 @@ TEST_CASE("random fill places particles without overlap, reproducibly", "[dem][i
   all.insert(all.end(), p.begin(), p.end());
   int overlaps = 0;
   for (std::size_t i = 0; i < all.size(); ++i)
-    for (std::size_t j = i + 1; j < all.size(); ++j) overlaps += (all[i].x - all[j].x).norm() < all[i].r + all[j].r;
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      overlaps += (all[i].x - all[j].x).norm() < all[i].r + all[j].r;
   CHECK(overlaps == 0);
   for (const auto& s : p)
     for (int d = 0; d < 3; ++d) CHECK((s.x[d] - s.r >= 0 && s.x[d] + s.r <= 0.01));

@@ -14,8 +14,8 @@ dem::TriangleMesh flat_grid(int n, double size) {
   const double h = size / n;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const Vec3 a(-size / 2 + i * h, -size / 2 + j * h, 0), b = a + Vec3(h, 0, 0), c = a + Vec3(h, h, 0),
-                 d = a + Vec3(0, h, 0);
+      const Vec3 a(-size / 2 + i * h, -size / 2 + j * h, 0),
+          b = a + Vec3(h, 0, 0), c = a + Vec3(h, h, 0), d = a + Vec3(0, h, 0);
       tris.push_back({a, b, c});
       tris.push_back({a, c, d});
     }
@@ -62,7 +62,8 @@ TEST_CASE("a sphere on a flat STL mesh moves as on the analytic plane", "[dem][m
   REQUIRE(a.size() == b.size());
   double worst = 0;
   for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, (a[k] - b[k]).norm());
-  INFO("largest deviation " << worst << " m over " << (a.back() - a.front()).norm() << " m travelled");
+  INFO("largest deviation " << worst << " m over " << (a.back() - a.front()).norm()
+                            << " m travelled");
   // The mesh computes the same distance and normal as the plane up to round-off (1e-16 relative);
   // 1e-9 m over ~10 mm of travel leaves room for round-off amplified by the bounces, while a double
   // contact at an edge or a reset tangential history would shift the path by micrometres.

@@ -29,8 +29,9 @@ TEST_CASE("oblique impact in gross sliding: tangential velocity and spin from th
     bool seen = false;
     for (int k = 0; k < 1000000; ++k) {
       sol.step();
-      const double fn = -sol.walls()[0].force.z();  // normal force on the particle (floor normal +z)
-      J += std::max(fn, 0.0) * s.dt;                // velocity Verlet applies sum F dt exactly
+      const double fn =
+          -sol.walls()[0].force.z();  // normal force on the particle (floor normal +z)
+      J += std::max(fn, 0.0) * s.dt;  // velocity Verlet applies sum F dt exactly
       if (sol.contacts_pw()) seen = true;
       if (seen && !sol.contacts_pw()) break;
     }

@@ -10,9 +10,9 @@ using namespace lbdem;
 namespace {
 
 struct Outcome {
-  double e;        // measured restitution
-  double t_c;      // measured contact duration [s]
-  double t_pred;   // predicted (analytic) duration [s]
+  double e;             // measured restitution
+  double t_c;           // measured contact duration [s]
+  double t_pred;        // predicted (analytic) duration [s]
   double energy_error;  // |stored + dissipated - initial| / initial
 };
 

@@ -1,5 +1,6 @@
-// Rolling resistance (constant torque and EPSD): a sphere rolling on a floor with speed v0 stops after
-// s = 7 v0^2 R / (10 mu_r g r_arm): the torque mu_r r_arm m g decelerates the rolling inertia 7/5 m R^2.
+// Rolling resistance (constant torque and EPSD): a sphere rolling on a floor with speed v0 stops
+// after s = 7 v0^2 R / (10 mu_r g r_arm): the torque mu_r r_arm m g decelerates the rolling inertia
+// 7/5 m R^2.
 #include <catch2/catch.hpp>
 
 #include "helpers/dem_setup.hpp"
@@ -16,7 +17,7 @@ double stop_distance(const std::string& model, double arm_factor, double mu_r, d
   cs.rolling = model;
   cs.rolling_arm_factor = arm_factor;
   auto s = test::settings(5e-7, Vec3(0, 0, -g));  // t_c/60 at 1 cm/s
-  s.domain.lo = Vec3(-0.005, -0.005, -0.005);  // it travels < 4 mm
+  s.domain.lo = Vec3(-0.005, -0.005, -0.005);     // it travels < 4 mm
   s.domain.hi = Vec3(0.02, 0.005, 0.01);
   s.contact = cs;
   dem::DemSolver sol(s, {mat});
@@ -35,7 +36,8 @@ TEST_CASE("rolling resistance stop distance, constant torque and EPSD", "[dem][p
   const double g = 9.81, r = 5e-4, v0 = 0.05;
   for (double arm : {1.0, 2.0}) {
     const double mu_r = 0.1;
-    const double expected = 7 * v0 * v0 * r / (10 * mu_r * g * arm * r);  // r_arm = arm * R* = arm * R
+    const double expected =
+        7 * v0 * v0 * r / (10 * mu_r * g * arm * r);  // r_arm = arm * R* = arm * R
     INFO("arm factor " << arm);
     // 3 %: the static overlap shortens the torque arm by delta/R ~ 1e-3 and the last step before
     // the stop is resolved to v < 1e-4 v0; the rest is the contact's normal oscillation at start.

@@ -25,21 +25,23 @@ TEST_CASE("restitution off a cylinder wall, inside and outside", "[dem][walls][p
     sol.add_particle(Vec3(x0, 0, 0), Vec3(v, 0, 0), r, 0);
     test::run_through_contact(sol);
     INFO((inside ? "inside" : "outside"));
-    // 1 %: as for the plane (t_c/50 here is finer than the restitution test's), the curvature of the
-    // wall only changes R*, which e does not depend on.
+    // 1 %: as for the plane (t_c/50 here is finer than the restitution test's), the curvature of
+    // the wall only changes R*, which e does not depend on.
     CHECK(-sol.particles().v[0].x() / v == Approx(e).epsilon(0.01));
   }
 }
 
-TEST_CASE("a moving mesh piston: rebound at 2V and wall work = energy given", "[dem][walls][mesh][physics]") {
+TEST_CASE("a moving mesh piston: rebound at 2V and wall work = energy given",
+          "[dem][walls][mesh][physics]") {
   const double r = 5e-4, V = 0.2;
   auto s = test::settings(2e-7);
   dem::DemSolver sol(s, {test::glass(1.0, 0.0)});
   dem::Wall w;
   w.name = "piston";
   dem::MeshWall m;
-  m.mesh = dem::TriangleMesh::from_triangles({{Vec3(-0.005, -0.005, 0), Vec3(0.005, -0.005, 0), Vec3(0.005, 0.005, 0)},
-                                              {Vec3(-0.005, -0.005, 0), Vec3(0.005, 0.005, 0), Vec3(-0.005, 0.005, 0)}});
+  m.mesh = dem::TriangleMesh::from_triangles(
+      {{Vec3(-0.005, -0.005, 0), Vec3(0.005, -0.005, 0), Vec3(0.005, 0.005, 0)},
+       {Vec3(-0.005, -0.005, 0), Vec3(0.005, 0.005, 0), Vec3(-0.005, 0.005, 0)}});
   m.motion.velocity = Vec3(0, 0, V);
   w.shape = std::move(m);
   sol.add_wall(std::move(w));

@@ -18,8 +18,10 @@ struct Result {
 };
 
 Result cli(const std::string& args) {
-  const std::string errfile = fs::temp_directory_path() / ("lbdem_cli_err_" + std::to_string(std::rand()));
-  const std::string cmd = std::string(LBDEM_CLI) + " " + args + " --no-plots > /dev/null 2> " + errfile;
+  const std::string errfile =
+      fs::temp_directory_path() / ("lbdem_cli_err_" + std::to_string(std::rand()));
+  const std::string cmd =
+      std::string(LBDEM_CLI) + " " + args + " --no-plots > /dev/null 2> " + errfile;
   const int rc = std::system(cmd.c_str());
   std::string err;
   if (FILE* f = std::fopen(errfile.c_str(), "r")) {
@@ -33,7 +35,8 @@ Result cli(const std::string& args) {
 }
 
 std::string tmpdir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("lbdem_test_" + name + "_" + std::to_string(::getpid()));
+  const fs::path p =
+      fs::temp_directory_path() / ("lbdem_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   return p.string();
 }
@@ -50,11 +53,12 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
   struct Case {
     std::string set, key;
   } cases[] = {
-      {"dem.dtt=1e-6", "dem.dtt"},                                   // unknown key
-      {"fill[0].radius.min=-1e-3", "fill[0].radius.min"},           // negative size
-      {"dem.dt=1e-3", "dem.dt"},                                     // unstable time step
-      {"contact.normal=\"herz\"", "contact.normal"},                 // unknown law
-      {"particle=[{position=[1.0,0.0,0.0],radius=1e-3}]", "particle[0].position"},  // outside the box
+      {"dem.dtt=1e-6", "dem.dtt"},                         // unknown key
+      {"fill[0].radius.min=-1e-3", "fill[0].radius.min"},  // negative size
+      {"dem.dt=1e-3", "dem.dt"},                           // unstable time step
+      {"contact.normal=\"herz\"", "contact.normal"},       // unknown law
+      {"particle=[{position=[1.0,0.0,0.0],radius=1e-3}]",
+       "particle[0].position"},  // outside the box
   };
   for (const auto& c : cases) {
     const std::string out = tmpdir("bad");
@@ -99,13 +103,15 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   fs::remove_all(part);
 }
 
-TEST_CASE("SIGTERM writes a checkpoint and the resumed run equals an uninterrupted one", "[scenarios][checkpoint][slow]") {
+TEST_CASE("SIGTERM writes a checkpoint and the resumed run equals an uninterrupted one",
+          "[scenarios][checkpoint][slow]") {
   const std::string full = tmpdir("sig_full"), part = tmpdir("sig_part");
   // Long enough (about 2 s) that the signal after 0.5 s lands in the middle of the run.
   const std::string args = kSmall + " --set run.end_time=0.6 --set output.checkpoint_interval=0.6";
   REQUIRE(cli("run box --out " + full + args).code == 0);
-  const std::string cmd = std::string(LBDEM_CLI) + " run box --out " + part + args +
-                          " --no-plots > /dev/null 2>&1 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; exit $?";
+  const std::string cmd =
+      std::string(LBDEM_CLI) + " run box --out " + part + args +
+      " --no-plots > /dev/null 2>&1 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; exit $?";
   const int rc = std::system(cmd.c_str());  // /bin/sh: background job, signal, wait for its status
   const Result r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ""};
   std::string status;

@@ -1,5 +1,6 @@
 // Box scenario features that need a run: an inflow region delivers its mass rate, an outlet region
-// removes particles and counts their mass, one-row-per-contact output respects its window and budget.
+// removes particles and counts their mass, one-row-per-contact output respects its window and
+// budget.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -27,7 +28,8 @@ interval = 0.01
 )";
 }  // namespace
 
-TEST_CASE("inflow delivers its mass rate and the outlet counts what it removes", "[scenarios][box]") {
+TEST_CASE("inflow delivers its mass rate and the outlet counts what it removes",
+          "[scenarios][box]") {
   auto cfg = Config::from_string(std::string(kBase) + R"(
 [inflow]
 enabled = true
