@@ -67,27 +67,35 @@ double DemSolver::wall_displacement() const {
 void DemSolver::step() {
   const double dt = s_.dt, h = 0.5 * dt;
   const std::size_t n = p_.size();
+  // Half kick, drift, and the velocities predicted to the end of the step (v + dt/2 F_old/m, used
+  // by the dashpots), in one pass; a rebuild reorders particles, so it recomputes the predictions.
+  v_pred_.resize(n);
+  w_pred_.resize(n);
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2)
   for (std::size_t k = 0; k < n; ++k) {
-    p_.v[k] += (h / p_.mass[k]) * p_.force[k];
-    p_.omega[k] += (h / p_.inertia[k]) * p_.torque[k];
+    const Vec3 dv = (h / p_.mass[k]) * p_.force[k], dw = (h / p_.inertia[k]) * p_.torque[k];
+    p_.v[k] += dv;
+    p_.omega[k] += dw;
     p_.x[k] += dt * p_.v[k];
+    v_pred_[k] = p_.v[k] + dv;
+    w_pred_[k] = p_.omega[k] + dw;
     if (k < x_ref_.size()) max_d2 = std::max(max_d2, (p_.x[k] - x_ref_[k]).squaredNorm());
   }
   t_ = static_cast<double>(step_ + 1) * dt;  // from the step count: no drift over 1e8 steps
   ++step_;
   update_walls();
   const double max_d = std::sqrt(max_d2);
-  if (need_rebuild_ || 2 * max_d > s_.skin || max_d + wall_displacement() > s_.skin) rebuild();
-  // Velocities predicted to the end of the step (after the rebuild, which may reorder particles).
-  const std::size_t np = p_.size();
-  v_pred_.resize(np);
-  w_pred_.resize(np);
+  if (need_rebuild_ || 2 * max_d > s_.skin || max_d + wall_displacement() > s_.skin) {
+    rebuild();
+    const std::size_t np = p_.size();
+    v_pred_.resize(np);
+    w_pred_.resize(np);
 #pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) {
-    v_pred_[k] = p_.v[k] + (h / p_.mass[k]) * p_.force[k];
-    w_pred_[k] = p_.omega[k] + (h / p_.inertia[k]) * p_.torque[k];
+    for (std::size_t k = 0; k < np; ++k) {
+      v_pred_[k] = p_.v[k] + (h / p_.mass[k]) * p_.force[k];
+      w_pred_[k] = p_.omega[k] + (h / p_.inertia[k]) * p_.torque[k];
+    }
   }
   std::visit(
       [&](const auto& table) {
