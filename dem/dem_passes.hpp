@@ -104,24 +104,34 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
 }
 
+/// Pairs are taken row by row (all pairs with the same i in one thread, in ascending j), so the
+/// forces on i are summed right here in a fixed order; the particle pass gathers only the j side.
 template <class Table>
 void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr,
-                   const DemSettings& s, PairList& pl, double time) {
-  const std::size_t np = pl.size();
+                   const DemSettings& s, PairList& pl, double time, RowSums& sums) {
+  const std::size_t n = p.size();
   const double range = tab.range;
   const Domain& dom = s.domain;
   const bool per = dom.any_periodic();
+  sums.f.resize(n);
+  sums.t.resize(n);
   // The distance test stays in the loop: most listed pairs are in the skin only, and the kernel's
   // large frame is set up just for those that interact.
 #pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) {
-    const std::uint32_t i = pl.i[k], j = pl.j[k];
-    Vec3 d = p.x[j] - p.x[i];
-    if (per) d = dom.min_image(d);
-    const double r2 = d.squaredNorm();
-    const double reach = p.radius[i] + p.radius[j] + range;
-    if (r2 >= reach * reach && !pl.state[k]) continue;
-    pair_kernel(tab, p, pr, s, pl, time, k, d, r2);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+    for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
+      const std::uint32_t j = pl.j[k];
+      Vec3 d = p.x[j] - p.x[i];
+      if (per) d = dom.min_image(d);
+      const double r2 = d.squaredNorm();
+      const double reach = p.radius[i] + p.radius[j] + range;
+      if (r2 >= reach * reach && !pl.state[k]) continue;
+      pair_kernel(tab, p, pr, s, pl, time, k, d, r2);
+      if (pl.state[k] & kInteracting) f += pl.force[k], t += pl.torque_i[k];
+    }
+    sums.f[i] = f;
+    sums.t[i] = t;
   }
 }
 
@@ -157,9 +167,9 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
 
 template <class Table>
 LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, const Predicted& pr,
-                                          const DemSettings& s, const std::vector<Wall>& walls,
-                                          const PairList& pl, WallContactList& wc, double time,
-                                          std::size_t k) {
+                                          const RowSums& sums, const DemSettings& s,
+                                          const std::vector<Wall>& walls, const PairList& pl,
+                                          WallContactList& wc, double time, std::size_t k) {
   using Law = typename Table::law_type;
   const double dt = s.dt, h = 0.5 * dt, range = tab.range;
   const Vec3& vk = pr.v[k];
@@ -222,8 +232,8 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
       ++e;
     }
   }
-  for (std::uint32_t q = pl.first[k]; q < pl.first[k + 1]; ++q)
-    if (pl.state[q] & kInteracting) f += pl.force[q], tq += pl.torque_i[q];
+  f += sums.f[k];
+  tq += sums.t[k];
   for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r) {
     const std::uint32_t q = pl.jpair[r];
     if (pl.state[q] & kInteracting) f -= pl.force[q], tq += pl.torque_j[q];
@@ -236,11 +246,11 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
 
 template <class Table>
 void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr,
-                       const DemSettings& s, const std::vector<Wall>& walls, const PairList& pl,
-                       WallContactList& wc, double time) {
+                       const RowSums& sums, const DemSettings& s, const std::vector<Wall>& walls,
+                       const PairList& pl, WallContactList& wc, double time) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < n; ++k) particle_kernel(tab, p, pr, s, walls, pl, wc, time, k);
+  for (std::size_t k = 0; k < n; ++k) particle_kernel(tab, p, pr, sums, s, walls, pl, wc, time, k);
 }
 
 }  // namespace lbdem::dem

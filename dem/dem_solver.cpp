@@ -109,12 +109,12 @@ void DemSolver::step() {
 
 template <class Table>
 void DemSolver::pair_pass(const Table& t) {
-  run_pair_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, pairs_, t_);
+  run_pair_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, pairs_, t_, row_sums_);
 }
 
 template <class Table>
 void DemSolver::particle_pass(const Table& t) {
-  run_particle_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, walls_, pairs_, wc_, t_);
+  run_particle_pass(t, p_, Predicted{v_pred_, w_pred_}, row_sums_, s_, walls_, pairs_, wc_, t_);
 }
 
 void DemSolver::event_scan() {

@@ -34,6 +34,11 @@ class H5In;
 
 namespace lbdem::dem {
 
+/// Force and torque on each particle from the pairs where it is i, summed by the pair pass.
+struct RowSums {
+  std::vector<Vec3> f, t;
+};
+
 struct DemSettings {
   double dt = 1e-6;                  // [s]
   Vec3 gravity = Vec3(0, 0, -9.81);  // [m/s^2]
@@ -121,8 +126,9 @@ class DemSolver {
   PairList pairs_;
   WallContactList wc_;
   CollisionStats stats_;
-  std::vector<Vec3> x_ref_;                  // positions at the last rebuild
-  std::vector<Vec3> v_pred_, w_pred_;        // end-of-step predicted velocities (per step)
+  std::vector<Vec3> x_ref_;  // positions at the last rebuild
+  std::vector<Vec3> v_pred_, w_pred_;
+  RowSums row_sums_;                         // i-side pair sums of the step
   std::vector<std::vector<Vec3>> wall_ref_;  // mesh vertices at the last rebuild
   std::vector<std::uint8_t> remove_flag_;
   double t_ = 0;
