@@ -2,6 +2,9 @@
 // and up to the row budget, with the overflow counted (a dense bed must not fill the disk unasked).
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/h5.hpp"
 #include "dem/collision_stats.hpp"
@@ -27,7 +30,9 @@ TEST_CASE("collision rows respect the time window and the row budget", "[dem][co
   CHECK(stats.started_pp() == 6);
   CHECK(stats.rows_dropped() == 1);  // 4 ends inside [1, 2], budget 3
   CHECK(stats.closed_energy()[0] == Approx(6e-6));
-  const auto path = (std::filesystem::temp_directory_path() / "lbdem_collisions_test.h5").string();
+  const auto path = (std::filesystem::temp_directory_path() /
+                     ("lbdem_collisions_" + std::to_string(::getpid()) + ".h5"))
+                        .string();
   stats.write(path, 3.0);
   const H5In f(path);
   CHECK(f.doubles("/rows/t_end_s") == std::vector<double>{1.1, 1.2, 1.5});

@@ -3,6 +3,9 @@
 // across triangles).
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "helpers/dem_setup.hpp"
 
@@ -35,7 +38,8 @@ std::vector<Vec3> trajectory(bool mesh) {
     w.name = "stl";
     dem::MeshWall m;
     // Through an STL file, as a user would give it.
-    const auto path = std::filesystem::temp_directory_path() / "lbdem_flat_grid.stl";
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("lbdem_flat_grid_" + std::to_string(::getpid()) + ".stl");
     flat_grid(8, 0.02).write_stl_binary(path.string());
     m.mesh = dem::TriangleMesh::from_stl(path.string(), 1.0, "walls[0].file");
     std::filesystem::remove(path);

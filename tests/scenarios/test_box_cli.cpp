@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include "core/h5.hpp"
 
 namespace fs = std::filesystem;
@@ -18,8 +20,11 @@ struct Result {
 };
 
 Result cli(const std::string& args) {
+  // Unique per process and call: ctest runs test processes side by side.
+  static int calls = 0;
   const std::string errfile =
-      fs::temp_directory_path() / ("lbdem_cli_err_" + std::to_string(std::rand()));
+      fs::temp_directory_path() /
+      ("lbdem_cli_err_" + std::to_string(::getpid()) + "_" + std::to_string(calls++));
   const std::string cmd =
       std::string(LBDEM_CLI) + " " + args + " --no-plots > /dev/null 2> " + errfile;
   const int rc = std::system(cmd.c_str());
