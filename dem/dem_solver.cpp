@@ -152,22 +152,14 @@ void DemSolver::event_scan() {
 void DemSolver::sum_wall_loads() {
   const std::size_t nw = walls_.size();
   if (nw == 0) return;
-  struct Loads {
-    std::vector<double> v;  // per wall: F(3), T(3); then total power
-    Loads& operator+=(const Loads& o) {
-      if (v.empty()) v.assign(o.v.size(), 0.0);
-      for (std::size_t k = 0; k < v.size(); ++k) v[k] += o.v[k];
-      return *this;
-    }
-  };
-  Loads zero{std::vector<double>(6 * nw + 1, 0.0)};
-  // One block-partial per 4096 entries: the element-wise Loads sum is fixed-order.
-  const std::size_t ne = wc_.size();
-  const std::size_t nb = (ne + kSumBlock - 1) / kSumBlock;
-  std::vector<Loads> part(nb, zero);
+  // Fixed blocks of entries (independent of the thread count), each with its partial per wall:
+  // F (3), T (3), then the total power; the partials are added serially in block order.
+  const std::size_t width = 6 * nw + 1, ne = wc_.size();
+  const std::size_t nb = std::max<std::size_t>(1, (ne + kSumBlock - 1) / kSumBlock);
+  wall_partials_.assign(nb * width, 0.0);  // reuses its capacity: no allocation per step
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nb; ++b) {
-    auto& v = part[b].v;
+    double* v = wall_partials_.data() + b * width;
     for (std::size_t k = b * kSumBlock; k < std::min(ne, (b + 1) * kSumBlock); ++k) {
       if (!(wc_.state[k] & kInteracting)) continue;
       const std::size_t w = wc_.wall[k];
@@ -176,13 +168,14 @@ void DemSolver::sum_wall_loads() {
       v[6 * nw] += wc_.power[k];
     }
   }
-  Loads tot = zero;
-  for (const auto& p : part) tot += p;
+  for (std::size_t b = 1; b < nb; ++b)
+    for (std::size_t c = 0; c < width; ++c) wall_partials_[c] += wall_partials_[b * width + c];
+  const double* tot = wall_partials_.data();
   for (std::size_t w = 0; w < nw; ++w) {
-    walls_[w].force = Vec3(tot.v[6 * w], tot.v[6 * w + 1], tot.v[6 * w + 2]);
-    walls_[w].torque = Vec3(tot.v[6 * w + 3], tot.v[6 * w + 4], tot.v[6 * w + 5]);
+    walls_[w].force = Vec3(tot[6 * w], tot[6 * w + 1], tot[6 * w + 2]);
+    walls_[w].torque = Vec3(tot[6 * w + 3], tot[6 * w + 4], tot[6 * w + 5]);
   }
-  const double power = tot.v[6 * nw];
+  const double power = tot[6 * nw];
   wall_work_ += 0.5 * s_.dt * (wall_power_prev_ + power);  // trapezoidal rule
   wall_power_prev_ = power;
 }

@@ -126,9 +126,11 @@ class DemSolver {
   PairList pairs_;
   WallContactList wc_;
   CollisionStats stats_;
-  std::vector<Vec3> x_ref_;                  // positions at the last rebuild
-  std::vector<Vec3> v_pred_, w_pred_;        // end-of-step predicted velocities
-  RowSums row_sums_;                         // i-side pair sums of the step
+  std::vector<Vec3> x_ref_;            // positions at the last rebuild
+  std::vector<Vec3> v_pred_, w_pred_;  // end-of-step predicted velocities
+  RowSums row_sums_;
+  std::vector<double> wall_partials_;  // block partials of the wall loads (reused) // i-side pair
+                                       // sums of the step
   std::vector<std::vector<Vec3>> wall_ref_;  // mesh vertices at the last rebuild
   std::vector<std::uint8_t> remove_flag_;
   double t_ = 0;
