@@ -94,7 +94,14 @@ int run_scenario(const RunOptions& opt) {
   if (!fs::exists(file))
     throw InputError("--config", file, "file not found", "give the path of a TOML file");
   Config cfg = Config::from_file(file);
-  for (const auto& s : opt.sets) cfg.set_override(s);
+  for (const auto& s : opt.sets) {
+    // A resumed run continues the same physics: only its end and its output may change.
+    const std::string key = s.substr(0, s.find('='));
+    if (resume && key != "run.end_time" && key.rfind("output.", 0) != 0)
+      throw InputError("--set", s, "only run.end_time and output.* can change when resuming",
+                       "start a new run (--config " + file + ") to change anything else");
+    cfg.set_override(s);
+  }
   cfg.get_string("scenario", name);  // recorded, so the resolved config names its scenario
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 

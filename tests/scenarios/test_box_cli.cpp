@@ -104,6 +104,10 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
     return s;
   };
   CHECK(read(full + "/timeseries.csv") == read(part + "/timeseries.csv"));
+  // Physics cannot change on resume (the checkpoint would not match it): exit 2, key named.
+  const auto bad = cli("run --resume " + part + " --set materials[0].friction=0.1");
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find("materials[0].friction") != std::string::npos);
   fs::remove_all(full);
   fs::remove_all(part);
 }
