@@ -70,7 +70,8 @@ struct Predicted {
 template <class Table>
 LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
                                       const Predicted& pr, const DemSettings& s, PairList& pl,
-                                      double time, std::size_t k, const Vec3& d, double r2) {
+                                      double time, std::size_t k, const Vec3& d, double r2,
+                                      Vec3& f_i, Vec3& t_i) {
   using Law = typename Table::law_type;
   const double dt = s.dt;
   const std::uint32_t i = pl.i[k], j = pl.j[k];
@@ -97,11 +98,12 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   g.w_half = p.omega[i] - p.omega[j];
   const ContactForce c =
       Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
-  pl.force[k] = c.force;
   const Vec3 tc = g.n.cross(c.ft);
-  pl.torque_i[k] = ai * tc + c.m_roll;
-  pl.torque_j[k] = aj * tc - c.m_roll;
+  const std::uint32_t slot = pl.jslot[k];
+  pl.j_force[slot] = -c.force;
+  pl.j_torque[slot] = aj * tc - c.m_roll;
   book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
+  if (pl.state[k] & kInteracting) f_i += c.force, t_i += ai * tc + c.m_roll;
 }
 
 /// Pairs are taken row by row (all pairs with the same i in one thread, in ascending j), so the
@@ -127,8 +129,7 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& p
       const double r2 = d.squaredNorm();
       const double reach = p.radius[i] + p.radius[j] + range;
       if (r2 >= reach * reach && !pl.state[k]) continue;
-      pair_kernel(tab, p, pr, s, pl, time, k, d, r2);
-      if (pl.state[k] & kInteracting) f += pl.force[k], t += pl.torque_i[k];
+      pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t);
     }
     sums.f[i] = f;
     sums.t[i] = t;
@@ -234,10 +235,8 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
   }
   f += sums.f[k];
   tq += sums.t[k];
-  for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r) {
-    const std::uint32_t q = pl.jpair[r];
-    if (pl.state[q] & kInteracting) f -= pl.force[q], tq += pl.torque_j[q];
-  }
+  for (std::uint32_t r = pl.jfirst[k]; r < pl.jfirst[k + 1]; ++r)
+    f += pl.j_force[r], tq += pl.j_torque[r];
   p.force[k] = f;
   p.torque[k] = tq;
   p.v[k] += (h / p.mass[k]) * f;

@@ -13,18 +13,19 @@ void PairList::resize(std::size_t n) {
   history.assign(n, ContactHistory{});
   tally.assign(n, ContactTally{});
   state.assign(n, 0);
-  force.assign(n, Vec3::Zero());
-  torque_i.assign(n, Vec3::Zero());
-  torque_j.assign(n, Vec3::Zero());
+  j_force.assign(n, Vec3::Zero());
+  j_torque.assign(n, Vec3::Zero());
 }
 
 void PairList::build_transpose(std::size_t np) {
   jfirst.assign(np + 1, 0);
   for (auto pj : j) ++jfirst[pj + 1];
   for (std::size_t p = 0; p < np; ++p) jfirst[p + 1] += jfirst[p];
-  jpair.resize(size());
+  jslot.resize(size());
   std::vector<std::uint32_t> fill(jfirst.begin(), jfirst.end() - 1);
-  for (std::size_t k = 0; k < size(); ++k) jpair[fill[j[k]]++] = static_cast<std::uint32_t>(k);
+  for (std::size_t k = 0; k < size(); ++k) jslot[k] = fill[j[k]]++;
+  j_force.assign(size(), Vec3::Zero());
+  j_torque.assign(size(), Vec3::Zero());
 }
 
 void CellList::build(const std::vector<Vec3>& x, const CellGrid& g) {
