@@ -99,7 +99,12 @@ void DemSolver::rebuild() {
   x_ref_ = p_.x;
   wall_ref_.assign(walls_.size(), {});
   for (std::size_t w = 0; w < walls_.size(); ++w)
-    if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape)) wall_ref_[w] = m->current;
+    if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape)) {
+      wall_ref_[w] = m->current;
+    } else if (const auto* b = std::get_if<BoxWall>(&walls_[w].shape)) {
+      const auto c = b->corners(t_);
+      wall_ref_[w].assign(c.begin(), c.end());
+    }
   need_rebuild_ = false;
 }
 

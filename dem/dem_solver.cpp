@@ -59,6 +59,10 @@ double DemSolver::wall_displacement() const {
     if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape); m && m->motion.moving()) {
       for (std::size_t k = 0; k < m->current.size(); ++k)
         d2 = std::max(d2, (m->current[k] - wall_ref_[w][k]).squaredNorm());
+    } else if (const auto* b = std::get_if<BoxWall>(&walls_[w].shape); b && b->motion.moving()) {
+      const auto c = b->corners(t_);
+      for (std::size_t k = 0; k < c.size(); ++k)
+        d2 = std::max(d2, (c[k] - wall_ref_[w][k]).squaredNorm());
     }
   }
   return std::sqrt(d2);

@@ -1,28 +1,9 @@
 #pragma once
 // Triangle-mesh wall with prescribed rigid motion (translation plus rotation about an axis).
-#include <Eigen/Geometry>
-
+#include "dem/walls/prescribed_motion.hpp"
 #include "dem/walls/triangle_mesh.hpp"
 
 namespace lbdem::dem {
-
-struct PrescribedMotion {
-  Vec3 velocity = Vec3::Zero();    // translation [m/s]
-  Vec3 axis_point = Vec3::Zero();  // a point on the rotation axis at t = 0 [m]
-  Vec3 axis = Vec3::UnitZ();       // unit rotation axis [-]
-  double omega = 0;                // angular velocity [rad/s] (rpm * 2 pi / 60)
-
-  bool moving() const { return omega != 0 || velocity.squaredNorm() > 0; }
-  /// Position at time t of the body point that was at p0 at t = 0; evaluated from t = 0 each time,
-  /// so no error accumulates over a long run.
-  Vec3 position(const Vec3& p0, double t) const {
-    const Eigen::AngleAxisd rot(omega * t, axis);
-    return axis_point + velocity * t + rot * (p0 - axis_point);
-  }
-  Vec3 velocity_at(const Vec3& p, double t) const {
-    return velocity + omega * axis.cross(p - (axis_point + velocity * t));
-  }
-};
 
 struct MeshWall {
   TriangleMesh mesh;

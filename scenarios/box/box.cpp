@@ -224,6 +224,7 @@ int BoxScenario::run(const RunContext& ctx) {
       Vec3 axis = Vec3::UnitZ();
       if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
       if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
+      if (const auto* b = std::get_if<dem::BoxWall>(&w.shape)) axis = b->motion.axis;
       v.push_back(w.force[2]);
       v.push_back(w.torque.dot(axis));
     }

@@ -116,9 +116,23 @@ StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
   return c;
 }
 
+dem::PrescribedMotion read_motion(const Config& w) {
+  dem::PrescribedMotion m;
+  m.velocity = w.get_vec3("velocity", Vec3::Zero());
+  m.axis_point = w.get_vec3("axis_point", Vec3::Zero());
+  m.axis = w.get_vec3("axis", Vec3::UnitZ());
+  if (m.axis.norm() == 0)
+    throw InputError(w.path("axis"), "[0, 0, 0]", "zero rotation axis", "give a non-zero axis");
+  m.axis.normalize();
+  m.omega = w.get("rpm", 0.0) * 2 * kPi / 60;
+  m.start = w.get("start", 0.0, Range::non_negative());
+  m.ramp = w.get("ramp", 0.0, Range::non_negative());
+  return m;
+}
+
 dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
   dem::Wall out;
-  const std::string kind = w.get_choice("kind", "plane", {"plane", "cylinder", "stl"});
+  const std::string kind = w.get_choice("kind", "plane", {"plane", "cylinder", "stl", "box"});
   out.name = w.get_string("name", kind);
   out.material =
       material_index(mats, w.get_string("material", mats.front().name), w.path("material"));
@@ -143,6 +157,23 @@ dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
     c.hi = w.get("axial_max", 1e300);
     out.shape = c;
     out.torque_origin = c.origin;
+  } else if (kind == "box") {
+    dem::BoxWall b;
+    b.center = w.require_vec3("center");
+    b.half = 0.5 * w.require_vec3("size");
+    if (b.half.minCoeff() <= 0)
+      throw InputError(w.path("size"), to_text(2 * b.half.minCoeff()), "a box edge is not positive",
+                       "give the three edge lengths in m");
+    Vec3 ex = w.get_vec3("x_axis", Vec3::UnitX()), ey = w.get_vec3("y_axis", Vec3::UnitY());
+    if (ex.norm() == 0 || ey.norm() == 0 || ex.normalized().cross(ey.normalized()).norm() < 1e-9)
+      throw InputError(w.path("y_axis"), "", "x_axis and y_axis are zero or parallel",
+                       "give two perpendicular edge directions");
+    ex.normalize();
+    ey = (ey - ey.dot(ex) * ex).normalized();
+    b.axes = {ex, ey, ex.cross(ey)};
+    b.motion = read_motion(w);
+    out.torque_origin = b.motion.axis_point;
+    out.shape = b;
   } else {
     dem::MeshWall m;
     const std::string file = w.get_string("file", "");
@@ -152,10 +183,7 @@ dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
     m.mesh = dem::TriangleMesh::from_stl(file, scale, w.path("file"));
     const Vec3 shift = w.get_vec3("translate", Vec3::Zero());
     for (auto& v : m.mesh.vertices) v += shift;
-    m.motion.velocity = w.get_vec3("velocity", Vec3::Zero());
-    m.motion.axis_point = w.get_vec3("axis_point", Vec3::Zero());
-    m.motion.axis = w.get_vec3("axis", Vec3::UnitZ()).normalized();
-    m.motion.omega = w.get("rpm", 0.0) * 2 * kPi / 60;
+    m.motion = read_motion(w);
     out.torque_origin = m.motion.axis_point;
     out.shape = std::move(m);
   }

@@ -30,7 +30,10 @@ StepChoice choose_time_step(const Config& dem_cfg, const dem::ContactSettings& c
                             const std::vector<dem::Material>& mats,
                             const std::vector<int>& wall_mats, double r_min);
 
-/// Reads one [[walls]] table into a wall (kind = plane | cylinder | stl).
+/// Prescribed motion keys of a moving wall: velocity, axis_point, axis, rpm, start, ramp.
+dem::PrescribedMotion read_motion(const Config& w);
+
+/// Reads one [[walls]] table into a wall (kind = plane | cylinder | stl | box).
 dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats);
 
 }  // namespace lbdem::scenarios
