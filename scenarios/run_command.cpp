@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <memory>
 
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
+#include "scenarios/rheometer/rheometer.hpp"
 
 namespace lbdem::scenarios {
 
@@ -23,14 +25,23 @@ namespace {
 
 struct ScenarioEntry {
   std::string name, description, preset;
+  std::function<std::unique_ptr<Scenario>(const Config&)> make;
 };
+
+template <class S>
+std::unique_ptr<Scenario> make(const Config& c) {
+  return std::make_unique<S>(c);
+}
 
 // Checked-in table of scenarios (STYLE §2 "registration").
 const std::vector<ScenarioEntry>& scenarios() {
   static const std::vector<ScenarioEntry> table = {
       {"box",
        "particles poured into a box and settling; faces wall/periodic/open, STL walls, inflow",
-       "scenarios/box/presets/default.toml"},
+       "scenarios/box/presets/default.toml", make<BoxScenario>},
+      {"rheometer",
+       "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell, DESIGN 1.2)",
+       "scenarios/rheometer/presets/default.toml", make<RheometerScenario>},
   };
   return table;
 }
@@ -77,7 +88,8 @@ int run_scenario(const RunOptions& opt) {
     throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder",
                      "give a run folder that has one");
   const ScenarioEntry* entry = nullptr;
-  if (resume && name.empty()) name = "box";
+  if (resume && name.empty() && fs::exists(opt.resume + "/config.toml"))
+    name = Config::from_file(opt.resume + "/config.toml").get_string("scenario", "box");
   for (const auto& s : scenarios())
     if (s.name == name) entry = &s;
   if (!entry) {
@@ -105,7 +117,8 @@ int run_scenario(const RunOptions& opt) {
   cfg.get_string("scenario", name);  // recorded, so the resolved config names its scenario
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 
-  BoxScenario scenario(cfg);  // validates everything; throws InputError before any output
+  // Validates everything; throws InputError before any output.
+  const std::unique_ptr<Scenario> scenario = entry->make(cfg);
   cfg.check_unknown_keys();
 
   const std::string dir =
@@ -122,12 +135,12 @@ int run_scenario(const RunOptions& opt) {
   write_file_atomic(dir + "/status", "running\n");
   log.line("lbdem " + std::string(resume ? "resuming " : "running ") + name + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
-  scenario.banner(log);
+  scenario->banner(log);
   RunContext ctx{dir, resume, omp_get_max_threads(), &log, !opt.no_plots};
   const auto t0 = std::chrono::steady_clock::now();
   int rc = 0;
   try {
-    rc = scenario.run(ctx);
+    rc = scenario->run(ctx);
   } catch (const Interrupted& e) {
     write_file_atomic(dir + "/status", "stopped (resume with ./lbdem run --resume " + dir + ")\n");
     log.line(std::string(e.what()) + "; resume with ./lbdem run --resume " + dir);
@@ -138,7 +151,7 @@ int run_scenario(const RunOptions& opt) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   log.line("wall time " + to_text(wall) + " s; wall time per simulated second " +
-           to_text(wall / std::max(1e-300, scenario.output().end_time)) + " s/s");
+           to_text(wall / std::max(1e-300, scenario->output().end_time)) + " s/s");
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"

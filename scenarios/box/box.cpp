@@ -34,7 +34,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
       throw InputError(box.path("hi"), vec_text(s.domain.hi),
                        "not above box.lo along " + std::string(kAxes[a]),
                        "give hi > lo on every axis");
-  const auto mats = read_materials(cfg);
+  auto mats = read_materials(cfg);
   const std::string wall_mat_name = box.get_string("wall_material", mats.front().name);
   const int wall_mat = material_index(mats, wall_mat_name, box.path("wall_material"));
   std::vector<dem::Wall> walls;
@@ -66,6 +66,8 @@ BoxScenario::BoxScenario(const Config& cfg) {
   for (const Config& w : cfg.table_array("walls")) walls.push_back(read_wall(w, mats));
   s.gravity = cfg.section("physics").get_vec3("gravity", Vec3(0, 0, -9.81));
   s.contact = read_contact(cfg.section("contact"));
+  cg_ = read_coarse_grain(cfg.section("coarse_grain"), s.contact.normal);
+  const double l = cg_.l();
   s.collisions = read_collisions(cfg.section("output").section("collisions"));
 
   // Particles: explicit list, then random fills, all inside the box.
@@ -82,7 +84,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
     const Config& p = parts[k];
     Init q{p.require_vec3("position"), p.get_vec3("velocity", Vec3::Zero()),
            p.get_vec3("angular_velocity", Vec3::Zero()),
-           p.require("radius", Range::positive("give the particle radius in m")),
+           l * p.require("radius", Range::positive("give the particle radius in m")),
            material_index(mats, p.get_string("material", mats.front().name), p.path("material"))};
     if (!inside(q.x, 0, s.domain.lo, s.domain.hi))
       throw InputError(p.path("position"), vec_text(q.x),
@@ -108,7 +110,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
     const int mat =
         material_index(mats, f.get_string("material", mats.front().name), f.path("material"));
     req.density = mats[mat].density;
-    req.radius = read_radius(f.section("radius"));
+    req.radius = scaled(read_radius(f.section("radius")), l);
     const Vec3 v = f.get_vec3("velocity", Vec3::Zero());
     const auto got = dem::random_fill(req, placed, rng_);
     const bool short_count = req.count > 0 && static_cast<std::int64_t>(got.size()) < req.count;
@@ -139,7 +141,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
     inflow_.material = material_index(mats, inflow.get_string("material", mats.front().name),
                                       inflow.path("material"));
     inflow_.velocity = inflow.get_vec3("velocity", Vec3::Zero());
-    inflow_.radius = read_radius(inflow.section("radius"));
+    inflow_.radius = scaled(read_radius(inflow.section("radius")), l);
     r_min = std::min(r_min, inflow_.radius.smallest());
   }
   const Config outlet = cfg.section("outlet");
@@ -155,7 +157,10 @@ BoxScenario::BoxScenario(const Config& cfg) {
   const Config dcfg = cfg.section("dem");
   std::vector<int> wall_mats;
   for (const auto& w : walls) wall_mats.push_back(w.material);
-  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min);
+  // Contact parameters of parcels (the config gives the originals); r_min is a parcel radius.
+  const double dt_factor = cg_.dt_factor(mats.front(), r_min / l);
+  cg_.apply(mats, r_min / l);
+  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor);
   s.dt = step_.dt;
   s.skin = dcfg.get("skin", 0.2 * r_min,
                     Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
@@ -175,6 +180,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
 }
 
 void BoxScenario::banner(Log& log) const {
+  for (const auto& line : cg_.banner) log.line(line);
   dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
              step_.scales.rayleigh_time, step_.scales.where);
 }

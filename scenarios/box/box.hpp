@@ -10,23 +10,25 @@
 #include "core/config.hpp"
 #include "dem/dem_solver.hpp"
 #include "dem/insertion.hpp"
+#include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/dem_config.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/run_context.hpp"
+#include "scenarios/common/scenario.hpp"
 
 namespace lbdem::scenarios {
 
-class BoxScenario {
+class BoxScenario : public Scenario {
  public:
   /// Reads and checks the whole config (throws InputError): nothing is written here.
   explicit BoxScenario(const Config& cfg);
-  void banner(Log& log) const;
-  int run(const RunContext& ctx);
+  void banner(Log& log) const override;
+  int run(const RunContext& ctx) override;
   dem::DemSolver& solver() { return *solver_; }
   /// Inflow and outlet, called by the driver before every step (public for tests that step by
   /// hand).
   void before_step(dem::DemSolver& s);
-  const OutputSettings& output() const { return out_; }
+  const OutputSettings& output() const override { return out_; }
 
  private:
   struct Inflow {
@@ -46,6 +48,7 @@ class BoxScenario {
   std::unique_ptr<dem::DemSolver> solver_;
   OutputSettings out_;
   StepChoice step_;
+  CoarseGrain cg_;
   Inflow inflow_;
   Outlet outlet_;
   std::mt19937_64 rng_;

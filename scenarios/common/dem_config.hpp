@@ -20,15 +20,20 @@ dem::ContactSettings read_contact(const Config& c);
 dem::RadiusDistribution read_radius(const Config& c);
 dem::CollisionSettings read_collisions(const Config& c);
 
-/// [dem] time step: dt given, or t_c / steps_per_contact. A dt above t_c/20 at the impact speed is
-/// an error unless force_dt = true (the seed studies run at t_c/9 to t_c/16 and force it).
+/// [dem] time step: dt given (times dt_factor, the coarse-graining rule's step factor), or
+/// t_c / steps_per_contact. A dt above t_c/20 at the impact speed is an error unless force_dt =
+/// true (the seed studies run at t_c/9 to t_c/16 and force it).
 struct StepChoice {
   double dt, impact_speed;
   dem::TimeScales scales;
 };
 StepChoice choose_time_step(const Config& dem_cfg, const dem::ContactSettings& cs,
                             const std::vector<dem::Material>& mats,
-                            const std::vector<int>& wall_mats, double r_min);
+                            const std::vector<int>& wall_mats, double r_min,
+                            double dt_factor = 1.0);
+
+/// A radius distribution for parcels of size factor l (every radius times l).
+dem::RadiusDistribution scaled(dem::RadiusDistribution r, double l);
 
 /// Prescribed motion keys of a moving wall: velocity, axis_point, axis, rpm, start, ramp.
 dem::PrescribedMotion read_motion(const Config& w);

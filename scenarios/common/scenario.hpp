@@ -1,0 +1,19 @@
+#pragma once
+// What the run command needs from a scenario: a banner, the loop, and the output settings. A
+// scenario is built from a config (and validates all of it in its constructor, before any output);
+// it composes solvers and is not a subclass of them (STYLE §4).
+#include "core/log.hpp"
+#include "scenarios/common/dem_driver.hpp"
+#include "scenarios/common/run_context.hpp"
+
+namespace lbdem::scenarios {
+
+class Scenario {
+ public:
+  virtual ~Scenario() = default;
+  virtual void banner(Log& log) const = 0;
+  virtual int run(const RunContext& ctx) = 0;
+  virtual const OutputSettings& output() const = 0;
+};
+
+}  // namespace lbdem::scenarios
