@@ -22,10 +22,19 @@ int main(int argc, char** argv) {
   run->add_flag("--list", opt.list, "list the scenarios");
   run->add_flag("--no-plots", opt.no_plots, "skip the PNG plots");
   auto* study = app.add_subcommand("study", "run a multi-run study");
-  std::string study_name;
-  bool study_list = false;
-  study->add_option("name", study_name, "study name (see --list)");
-  study->add_flag("--list", study_list, "list the studies");
+  StudyOptions so;
+  study->add_option("name", so.name, "study name (see --list)");
+  study->add_option("--cases", so.cases, "run only these cases (comma separated)")->delimiter(',');
+  study
+      ->add_option("--end-time", so.end_time,
+                   "simulated end time of every case [s] (a measured window; default: presets)")
+      ->check(CLI::PositiveNumber);
+  study->add_option("--set", so.sets, "override a key in every new case (repeatable)");
+  study->add_option("--out", so.out, "study folder (default: studies/<name>)");
+  study->add_option("--threads", so.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  study->add_flag("--no-plots", so.no_plots, "skip the PNG plots");
+  study->add_flag("--list", so.list, "list the studies");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -33,7 +42,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : lbdem::kInputErrorExit;
   }
   try {
-    if (*study) return run_study(study_name, study_list);
+    if (*study) return run_study(so);
     return run_scenario(opt);
   } catch (const lbdem::InputError& e) {
     std::cerr << "lbdem: error: " << e.what() << "\n";

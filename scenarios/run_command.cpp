@@ -16,6 +16,7 @@
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
+#include "scenarios/rheometer/rheometer_study.hpp"
 
 namespace lbdem::scenarios {
 
@@ -68,13 +69,15 @@ void make_plots(const std::string& dir, Log& log) {
 
 }  // namespace
 
-int run_study(const std::string& name, bool list) {
-  if (list || name.empty()) {
-    std::cout << "studies: none yet (the rheometer, fluidized-bed and jet-mill studies come with "
-                 "their issues)\n";
+int run_study(const StudyOptions& opt) {
+  if (opt.list || opt.name.empty()) {
+    std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule "
+                 "(DESIGN 1.2): torque table and plot\n";
     return 0;
   }
-  throw InputError("study", name, "unknown study; known: none yet", "run ./lbdem study --list");
+  if (opt.name == "rheometer") return run_rheometer_study(opt);
+  throw InputError("study", opt.name, "unknown study; known: rheometer",
+                   "run ./lbdem study --list");
 }
 
 int run_scenario(const RunOptions& opt) {

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/study_options.hpp"
+
 namespace lbdem::scenarios {
 
 struct RunOptions {
@@ -15,6 +17,7 @@ struct RunOptions {
 /// Validates the whole input before anything is written (InputError -> exit 2, no run folder), then
 /// creates the run folder, writes config.toml and log.txt, runs, and makes the plots.
 int run_scenario(const RunOptions& opt);
-int run_study(const std::string& name, bool list);
+/// Runs the named study's cases one after another (see each study's header).
+int run_study(const StudyOptions& opt);
 
 }  // namespace lbdem::scenarios

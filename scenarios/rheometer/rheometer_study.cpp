@@ -1,0 +1,217 @@
+#include "scenarios/rheometer/rheometer_study.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "core/config.hpp"
+#include "core/error.hpp"
+#include "core/h5.hpp"
+#include "core/types.hpp"
+#include "scenarios/run_command.hpp"
+
+namespace lbdem::scenarios {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+  std::string name, preset, rule;
+  double l;
+  std::vector<std::string> sets;
+  std::string note;
+};
+
+// The series of DESIGN §1.2 and issue 9 §2: CG 1 / 1.6 / 2 under the seed's literal rule
+// (stiffness_only), linear similarity and Hertz, the fixed-step variants and a t_c/50 check.
+const std::vector<Case>& cases() {
+  static const std::vector<Case> c = {
+      {"cg1", "cg1", "seed (l = 1)", 1, {}, "dt 3.6 us"},
+      {"cg1_6", "cg1_6", "stiffness_only", 1.6, {}, "dt 3.6 us x l"},
+      {"cg2", "cg2", "stiffness_only", 2, {}, "dt 3.6 us x l"},
+      {"cg1_6_fixed_dt",
+       "cg1_6",
+       "stiffness_only",
+       1.6,
+       {"coarse_grain.scale_dt=false"},
+       "dt 3.6 us"},
+      {"cg2_fixed_dt", "cg2", "stiffness_only", 2, {"coarse_grain.scale_dt=false"}, "dt 3.6 us"},
+      {"cg1_6_similarity", "cg1_6_similarity", "linear_similarity", 1.6, {}, "dt 3.6 us x l"},
+      {"cg2_similarity", "cg2_similarity", "linear_similarity", 2, {}, "dt 3.6 us x l"},
+      {"cg1_hertz", "cg1_hertz", "hertz (l = 1)", 1, {}, "dt 3.6 us"},
+      {"cg1_6_hertz", "cg1_6_hertz", "hertz", 1.6, {}, "dt 3.6 us x l"},
+      {"cg2_hertz", "cg2_hertz", "hertz", 2, {}, "dt 3.6 us x l"},
+      {"cg1_tc50", "cg1", "seed (l = 1)", 1, {"dem.dt=1.1e-6"}, "dt t_c/50"},
+  };
+  return c;
+}
+
+struct Series {
+  std::vector<double> t, torque;
+};
+
+Series read_torque(const std::string& csv) {
+  std::ifstream f(csv);
+  std::string line;
+  Series s;
+  if (!std::getline(f, line)) return s;
+  std::vector<std::string> cols;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) cols.push_back(c);
+  const auto at = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+  };
+  const std::size_t it = at("time_s"), iq = at("torque_Nm");
+  if (it == cols.size() || iq == cols.size()) return s;
+  while (std::getline(f, line)) {
+    std::stringstream ls(line);
+    std::string v;
+    for (std::size_t k = 0; std::getline(ls, v, ','); ++k) {
+      if (k == it) s.t.push_back(std::stod(v));
+      if (k == iq) s.torque.push_back(std::stod(v));
+    }
+  }
+  return s;
+}
+
+double last_time(const std::string& csv) {
+  const Series s = read_torque(csv);
+  return s.t.empty() ? 0.0 : s.t.back();
+}
+
+std::string status_of(const std::string& dir) {
+  std::ifstream f(dir + "/status");
+  std::string s;
+  std::getline(f, s);
+  return s;
+}
+
+std::string fmt(double v, const char* f = "%.4g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+TorqueSummary summarize_torque(const std::vector<double>& t, const std::vector<double>& q,
+                               double start, double rpm) {
+  TorqueSummary out;
+  const double rev = 60.0 / std::max(std::abs(rpm), 1e-300);
+  const auto block_means = [&](double t0, double t1, double width) {
+    std::vector<double> sum, n;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (t[k] <= t0 || t[k] > t1) continue;
+      const auto b = static_cast<std::size_t>((t[k] - t0) / width);
+      if (b >= sum.size()) sum.resize(b + 1, 0.0), n.resize(b + 1, 0.0);
+      sum[b] += q[k], n[b] += 1;
+    }
+    std::vector<double> m;
+    for (std::size_t b = 0; b < sum.size(); ++b)
+      if (n[b] > 0) m.push_back(sum[b] / n[b]);
+    return m;
+  };
+  for (double m : block_means(start, start + rev, 0.01)) out.peak = std::max(out.peak, m);
+  const double t_end = t.empty() ? 0.0 : t.back();
+  const auto m = block_means(start + rev, t_end, 0.05);
+  double s = 0, s2 = 0, n = 0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] > start + rev) s += q[k], s2 += q[k] * q[k], n += 1;
+  if (n > 1) {
+    out.steady = s / n;
+    out.fluctuation = std::sqrt(std::max(0.0, s2 / n - out.steady * out.steady));
+  }
+  out.blocks = static_cast<int>(m.size());
+  if (m.size() > 1) {
+    double mm = 0, v = 0;
+    for (double x : m) mm += x / m.size();
+    for (double x : m) v += (x - mm) * (x - mm) / (m.size() - 1);
+    out.steady_err = std::sqrt(v / m.size());
+  }
+  return out;
+}
+
+int run_rheometer_study(const StudyOptions& opt) {
+  std::vector<const Case*> todo;
+  for (const auto& c : cases())
+    if (opt.cases.empty() ||
+        std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())
+      todo.push_back(&c);
+  for (const auto& want : opt.cases)
+    if (std::none_of(cases().begin(), cases().end(),
+                     [&](const Case& c) { return c.name == want; })) {
+      std::vector<std::string> names;
+      for (const auto& c : cases()) names.push_back(c.name);
+      throw InputError("--cases", want, "no such rheometer case",
+                       "did you mean '" + nearest(want, names) + "'? (./lbdem study --list)");
+    }
+  const std::string root = opt.out.empty() ? "studies/rheometer" : opt.out;
+  fs::create_directories(root);
+  const std::string src = LBDEM_SOURCE_DIR;
+  std::ostringstream table;
+  table << "case,rule,size_factor,note,parcels,gap_parcel_diameters,peak_torque_Nm,"
+           "steady_torque_Nm,steady_torque_err_Nm,fluctuation_Nm,blocks,simulated_s,"
+           "wall_s_per_simulated_s\n";
+  for (const Case* c : todo) {
+    const std::string dir = root + "/" + c->name;
+    const std::string st = status_of(dir);
+    RunOptions ro;
+    ro.threads = opt.threads;
+    ro.no_plots = opt.no_plots;
+    if (opt.end_time > 0) ro.sets.push_back("run.end_time=" + fmt(opt.end_time, "%.17g"));
+    const double t_before = last_time(dir + "/timeseries.csv");
+    const bool resumable = fs::exists(dir + "/checkpoint.h5") && st.rfind("finished", 0) != 0;
+    const bool done = st.rfind("finished", 0) == 0 &&
+                      (opt.end_time <= 0 || t_before >= opt.end_time * (1 - 1e-9));
+    double wall = 0;
+    if (!done) {
+      if (resumable || st.rfind("finished", 0) == 0) {
+        ro.resume = dir;
+      } else {
+        fs::remove_all(dir);
+        ro.scenario = "rheometer";
+        ro.config = src + "/scenarios/rheometer/presets/" + c->preset + ".toml";
+        ro.out = dir;
+        for (const auto& s : c->sets) ro.sets.push_back(s);
+        for (const auto& s : opt.sets) ro.sets.push_back(s);
+      }
+      std::cout << "== rheometer study: " << c->name << (ro.resume.empty() ? "" : " (resumed)")
+                << "\n";
+      const auto t0 = std::chrono::steady_clock::now();
+      const int rc = run_scenario(ro);
+      wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (rc != 0) return rc;
+    }
+    const Config cfg = Config::from_file(dir + "/config.toml");
+    const Series s = read_torque(dir + "/timeseries.csv");
+    const double start = cfg.section("rheometer").get("start", 0.2);
+    const double rpm = cfg.section("rheometer").get("rpm", 600.0);
+    const TorqueSummary ts = summarize_torque(s.t, s.torque, start, rpm);
+    const double simulated = (s.t.empty() ? 0.0 : s.t.back()) - t_before;
+    const double l = c->l;
+    const double gap = cfg.section("rheometer").get("cup_radius", 0.025) -
+                       0.5 * cfg.section("rheometer").get("blade_span", 0.048);
+    // Nominal parcel count and size from the fixed original radius of the presets.
+    const double r0 = cfg.section("particles").section("radius").get("radius", 5.3655e-4);
+    const double rho = cfg.table_array("materials").front().get("density", 950.0);
+    const double mass = cfg.section("rheometer").get("fill_mass", 43.6e-3);
+    table << c->name << "," << c->rule << "," << l << "," << c->note << ","
+          << fmt(std::round(mass / (rho * 4.0 / 3.0 * kPi * std::pow(l * r0, 3))), "%.0f") << ","
+          << fmt(gap / (2 * l * r0)) << "," << fmt(ts.peak) << "," << fmt(ts.steady) << ","
+          << fmt(ts.steady_err) << "," << fmt(ts.fluctuation) << "," << ts.blocks << ","
+          << fmt(simulated) << ","
+          << (wall > 0 && simulated > 0 ? fmt(wall / simulated) : std::string("")) << "\n";
+  }
+  write_file_atomic(root + "/study.csv", table.str());
+  std::cout << "rheometer study table: " << fs::absolute(root + "/study.csv").string() << "\n"
+            << table.str();
+  return 0;
+}
+
+}  // namespace lbdem::scenarios

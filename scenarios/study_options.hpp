@@ -1,0 +1,17 @@
+#pragma once
+// Options of `./lbdem study NAME`.
+#include <string>
+#include <vector>
+
+namespace lbdem::scenarios {
+
+struct StudyOptions {
+  std::string name, out;
+  std::vector<std::string> cases;  // empty: all of the study's cases
+  std::vector<std::string> sets;   // --set overrides applied to every case
+  double end_time = 0;             // > 0: overrides each case's run.end_time (a measured window)
+  int threads = 0;
+  bool list = false, no_plots = false;
+};
+
+}  // namespace lbdem::scenarios
