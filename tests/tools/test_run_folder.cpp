@@ -1,0 +1,45 @@
+// Reading run folders: a CSV being appended to, the error for an unknown column, the window error.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tools/src/run_folder.hpp"
+
+using namespace lbdem::tools;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("lbdem_test_tools_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+}  // namespace
+
+TEST_CASE("timeseries.csv: short rows and a partial last line are dropped", "[tools]") {
+  const fs::path d = fresh_dir("csv");
+  std::ofstream(d / "timeseries.csv") << "time_s,torque_Nm\n0,1.5\n0.1,2\n0.2\n0.3,nan\n0.4,7";
+  std::ofstream(d / "config.toml") << "[coarse_grain]\nsize_factor = 1.6\n";
+  const RunFolder r = RunFolder::open(d.string());
+  REQUIRE(r.series.rows() == 3);  // 0.2 has one field; 0.4 has no newline yet
+  CHECK(r.time()[2] == 0.3);
+  CHECK(std::isnan(r.series.column("torque_Nm")[2]));
+  CHECK(r.size_factor == 1.6);
+  try {
+    r.series.column("torqe_Nm");
+    FAIL("no error for an unknown column");
+  } catch (const ToolError& e) {
+    CHECK(std::string(e.what()).find("known: time_s, torque_Nm") != std::string::npos);
+  }
+  CHECK(window_error(r, 5, 6, 0, 2).find("it covers [0, 0.3] s") != std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST_CASE("Missing folder or series is a ToolError", "[tools]") {
+  const fs::path d = fresh_dir("missing");
+  CHECK_THROWS_AS(RunFolder::open((d / "nope").string()), ToolError);
+  CHECK_THROWS_AS(RunFolder::open(d.string()), ToolError);  // no timeseries.csv
+  fs::remove_all(d);
+}

@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""Plot of lbdem-collision-stats' output for several runs side by side (a coarse-graining series).
+
+usage: /usr/bin/python3 tools/collision_stats.py OUT.csv [--png FILE]
+
+Reads OUT.csv and OUT_impact_speed.csv (written by lbdem-collision-stats --csv OUT.csv) and, for
+the maps, each run's collisions.h5 /grid (the run_dir column). Writes OUT.png with, per run:
+collision frequencies per parcel and per represented original particle (particle-particle and
+particle-wall), dissipated energy per kg of powder by mechanism over the window, the normal
+impact-speed distributions (from the per-contact rows where they cover the window, else from the
+whole-run histograms: the legend says which), and a side view (x-z, summed over y) of where the
+energy was dissipated over the whole run. Exit 0 on success, 2 on missing or unreadable input.
+"""
+import argparse
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless machines and study drivers
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.colors import LogNorm  # noqa: E402
+
+MECHANISMS = [("normal_damping", "normal damping"), ("tangential_damping", "tangential damping"),
+              ("sliding", "sliding"), ("rolling", "rolling")]
+FREQS = [("freq_pp_per_parcel_per_s", "p-p per parcel"), ("freq_pw_per_parcel_per_s", "p-w per parcel"),
+         ("freq_pp_per_original_per_s", "p-p per original"),
+         ("freq_pw_per_original_per_s", "p-w per original")]
+
+
+def fail(msg):
+    print(f"collision_stats: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_rows(path):
+    if not os.path.isfile(path):
+        fail(f"no {path} (run lbdem-collision-stats --csv OUT.csv first)")
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def num(row, key):
+    try:
+        return float(row[key])
+    except (KeyError, ValueError):
+        return float("nan")
+
+
+def frequency_bars(ax, runs):
+    width = 0.8 / len(runs)
+    x = np.arange(len(FREQS))
+    for i, r in enumerate(runs):
+        vals = [num(r, k) for k, _ in FREQS]
+        bars = ax.bar(x + (i - (len(runs) - 1) / 2) * width, vals, width, label=r["label"],
+                      color=f"C{i}")
+        ax.bar_label(bars, fmt="%.3g", fontsize=6, rotation=90, padding=2)
+    ax.set_xticks(x, [lab for _, lab in FREQS], rotation=20, fontsize=8)
+    ax.set_yscale("log")  # per-original values are l^3 below per-parcel ones
+    ax.margins(y=0.25)
+    ax.set_ylabel("collisions per particle per second [1/s]")
+    ax.set_title("collision frequency", fontsize=10)
+    ax.grid(alpha=0.3, axis="y", which="both")
+    ax.legend(fontsize=8)
+
+
+def energy_bars(ax, runs):
+    x = np.arange(len(runs))
+    bottom = np.zeros(len(runs))
+    for j, (k, lab) in enumerate(MECHANISMS):
+        mass = np.array([num(r, "powder_mass_kg") for r in runs])
+        v = np.array([num(r, f"dissipated_{k}_J") for r in runs]) / mass
+        ax.bar(x, v, 0.6, bottom=bottom, label=lab, color=f"C{j + 4}")
+        bottom += np.nan_to_num(v)
+    for i, r in enumerate(runs):
+        ax.text(i, bottom[i], f"{num(r, 'dissipation_rate_per_kg_W_per_kg'):.3g} W/kg\n"
+                f"{num(r, 'dissipated_per_collision_J'):.2g} J/coll.", ha="center", va="bottom",
+                fontsize=7)
+    ax.set_xticks(x, [r["label"] for r in runs], fontsize=8)
+    ax.margins(y=0.2)
+    ax.set_ylabel("dissipated in the window per kg of powder [J/kg]")
+    ax.set_title("dissipated energy by mechanism", fontsize=10)
+    ax.grid(alpha=0.3, axis="y")
+    ax.legend(fontsize=7)
+
+
+def speed_distributions(ax, runs, hist):
+    vmin, vmax = np.inf, 0.0  # range of occupied bins: the solver's bins span 1e-5..1e3 m/s
+    for i, r in enumerate(runs):
+        for pair, ls in [("pp", "-"), ("pw", "--")]:
+            rows = [h for h in hist if h["label"] == r["label"] and h["pair"] == pair
+                    and h["kind"] == "normal"]
+            if not rows:
+                continue
+            lo = np.array([float(h["bin_lo_m_per_s"]) for h in rows])
+            hi = np.array([float(h["bin_hi_m_per_s"]) for h in rows])
+            c = np.array([float(h["count"]) for h in rows])
+            if c.sum() <= 0:
+                continue
+            # Density per unit log10(v): the bins are log-spaced, so this does not depend on them.
+            dens = c / c.sum() / np.log10(hi / lo)
+            vmin, vmax = min(vmin, lo[c > 0].min()), max(vmax, hi[c > 0].max())
+            src = "rows" if rows[0]["source"] == "rows" else "whole run"
+            ax.stairs(dens, np.append(lo, hi[-1]), color=f"C{i}", ls=ls, lw=1.4,
+                      label=f"{r['label']} {'p-p' if pair == 'pp' else 'p-w'} ({src})")
+    ax.set_xscale("log")
+    if vmax > 0:
+        ax.set_xlim(max(vmin, 1e-6 * vmax), vmax)
+    ax.set_xlabel("impact normal speed [m/s]")
+    ax.set_ylabel("impacts per decade / all impacts [-]")
+    ax.set_title("impact-speed distribution", fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+
+
+def side_view(run_dir):
+    """(x-z map of dissipated energy summed over y, extent, time) or None."""
+    path = os.path.join(run_dir, "collisions.h5")
+    if not os.path.isfile(path):
+        return None
+    with h5py.File(path, "r") as f:
+        g = f.get("/grid")
+        if g is None or "dissipated_J" not in g:
+            return None
+        d = np.asarray(g["dissipated_J"][()], dtype=float)
+        order = g.attrs.get("axis_order", b"xyz")
+        order = order.decode() if isinstance(order, bytes) else str(order)
+        if order == "zyx":
+            d = d.transpose(2, 1, 0)  # to (x, y, z)
+        lo, hi = np.asarray(g["lo_m"][()]), np.asarray(g["hi_m"][()])
+        t = float(f["/totals"].attrs.get("time_s", float("nan")))
+    return d.sum(axis=1), [lo[0], hi[0], lo[2], hi[2]], t
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog="\n\n".join(__doc__.split("\n\n")[1:]))
+    ap.add_argument("csv", metavar="OUT.csv", help="table written by lbdem-collision-stats --csv")
+    ap.add_argument("--png", help="output picture (default: OUT.png)")
+    args = ap.parse_args(argv[1:])
+    stem = args.csv[:-4] if args.csv.endswith(".csv") else args.csv
+    runs = read_rows(args.csv)
+    hist = read_rows(stem + "_impact_speed.csv")
+    if not runs:
+        fail(f"{args.csv} has no runs")
+    maps = [side_view(r["run_dir"]) for r in runs]
+    n_maps = sum(m is not None for m in maps)
+    ncol = max(3, n_maps)
+    fig = plt.figure(figsize=(4.6 * ncol, 9.5 if n_maps else 4.8))
+    gs = fig.add_gridspec(2 if n_maps else 1, ncol)
+    frequency_bars(fig.add_subplot(gs[0, 0]), runs)
+    energy_bars(fig.add_subplot(gs[0, 1]), runs)
+    speed_distributions(fig.add_subplot(gs[0, 2:]), runs, hist)
+    pos = [m[0][m[0] > 0] for m in maps if m is not None]
+    pos = np.concatenate(pos) if pos else np.array([])
+    # One colour scale for every map, so that runs compare; floored at 1e-4 of the peak.
+    norm = LogNorm(max(pos.min(), 1e-4 * pos.max()), pos.max()) if pos.size else None
+    k = 0
+    for r, m in zip(runs, maps):
+        if m is None:
+            continue
+        ax = fig.add_subplot(gs[1, k])
+        k += 1
+        xz, extent, t = m
+        im = ax.imshow(np.where(xz > 0, xz, np.nan).T, origin="lower", extent=extent, norm=norm,
+                       cmap="viridis", aspect="equal", interpolation="nearest")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("z [m]")
+        ax.set_title(f"{r['label']}: dissipation 0..{t:.3g} s, summed over y", fontsize=9)
+        fig.colorbar(im, ax=ax, label="dissipated per cell column [J]", shrink=0.9)
+    window = f"{num(runs[0], 't_from_s'):.4g}..{num(runs[0], 't_to_s'):.4g} s"
+    fig.suptitle(f"collision statistics, window {window}")
+    fig.tight_layout()
+    out = args.png or stem + ".png"
+    tmp = out + ".tmp.png"
+    fig.savefig(tmp, dpi=110, format="png")
+    plt.close(fig)
+    os.replace(tmp, out)  # a viewer never sees a half-written PNG
+    print(out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

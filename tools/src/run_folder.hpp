@@ -1,0 +1,87 @@
+#pragma once
+// What the post-processing tools read from a run folder: timeseries.csv (SI column names), the
+// coarse-graining size factor and the materials of the resolved config.toml, and snapshot masses.
+#include <cstddef>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lbdem::tools {
+
+/// A user-facing error: the tools print it as one line and exit with kToolErrorExit.
+class ToolError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+inline constexpr int kToolErrorExit = 2;  // the same code as lbdem's input errors (DESIGN §3)
+
+/// A CSV of numbers with a header line, stored by column.
+struct Table {
+  std::string source;
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+
+  std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+  bool has(std::string_view name) const;
+  /// The column `name`; ToolError listing the known columns otherwise.
+  const std::vector<double>& column(std::string_view name) const;
+};
+
+/// Reads a CSV of numbers. A row of the wrong width or without its final newline is dropped: the
+/// solver appends and flushes row by row, so a file read during a run can end in a partial line.
+Table read_csv(const std::string& path);
+
+/// l from a config.toml text: [coarse_grain] size_factor, else particles_per_parcel^(1/3), else 1.
+double size_factor_from_toml(std::string_view toml_text, const std::string& source);
+/// "l = 2.5" (%g of the size factor).
+std::string default_label(double size_factor);
+std::string join(const std::vector<std::string>& words, std::string_view sep);
+
+struct Material {
+  std::string name;
+  double density = 0;  // [kg/m³]
+};
+/// The [[materials]] array of a config.toml text, in file order (a snapshot's material index).
+std::vector<Material> materials_from_toml(std::string_view toml_text, const std::string& source);
+
+struct RunFolder {
+  std::string dir;
+  std::string name;          // last path component, for tables
+  std::string config_text;   // config.toml ("" if absent: then l = 1)
+  double size_factor = 1.0;  // l: one parcel stands for l³ originals
+  Table series;              // timeseries.csv
+
+  /// Checks that `dir` is a folder with a timeseries.csv; ToolError otherwise.
+  static RunFolder open(const std::string& dir);
+  const std::vector<double>& time() const { return series.column("time_s"); }
+};
+
+/// "window [T0, T1] s holds n row(s) of DIR/timeseries.csv (it covers [a, b] s); need m".
+std::string window_error(const RunFolder& run, double from, double to, std::size_t rows,
+                         std::size_t needed);
+
+/// A number of the run's config.toml at a dotted path ("output.collisions.rows_start"), or def.
+double config_number(const RunFolder& run, std::string_view dotted_key, double def);
+
+/// Mass of the particles [kg] in the latest snapshot at or before t (the first one if all are
+/// later), as Σ 4/3 π r³ ρ(material); NaN if the run has no snapshots or no densities.
+double snapshot_mass(const RunFolder& run, double t);
+
+/// Runs body() and maps ToolError to one line "tool: message" on stderr with kToolErrorExit, any
+/// other exception to "tool: failed: message" with exit 1.
+template <class Body>
+int guarded_main(const char* tool, Body&& body) {
+  try {
+    return body();
+  } catch (const ToolError& e) {
+    std::cerr << tool << ": " << e.what() << "\n";
+    return kToolErrorExit;
+  } catch (const std::exception& e) {
+    std::cerr << tool << ": failed: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace lbdem::tools
