@@ -1,6 +1,7 @@
 #include "scenarios/rheometer/rheometer_study.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -193,7 +194,8 @@ int run_rheometer_study(const StudyOptions& opt) {
     const double start = cfg.section("rheometer").get("start", 0.2);
     const double rpm = cfg.section("rheometer").get("rpm", 600.0);
     const TorqueSummary ts = summarize_torque(s.t, s.torque, start, rpm);
-    const double simulated = (s.t.empty() ? 0.0 : s.t.back()) - t_before;
+    // Simulated time of this invocation (the whole run if it was already done: no wall time).
+    const double simulated = (s.t.empty() ? 0.0 : s.t.back()) - (done ? 0.0 : t_before);
     const double l = c->l;
     const double gap = cfg.section("rheometer").get("cup_radius", 0.025) -
                        0.5 * cfg.section("rheometer").get("blade_span", 0.048);
@@ -209,6 +211,28 @@ int run_rheometer_study(const StudyOptions& opt) {
           << (wall > 0 && simulated > 0 ? fmt(wall / simulated) : std::string("")) << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
+  // Torque overlay and spectra (tools/): the steady window of every case, labelled by case name.
+  const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
+  const std::string python = LBDEM_PYTHON;
+  if (!opt.no_plots && fs::exists(bin / "lbdem-compare-runs") && !python.empty()) {
+    std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column torque_Nm";
+    double from = 0;
+    std::string labels;
+    for (const Case* c : todo) {
+      cmd += " '" + root + "/" + c->name + "'";
+      labels += " '" + c->name + "'";
+      const Config cfg = Config::from_file(root + "/" + c->name + "/config.toml");
+      from = std::max(from, cfg.section("rheometer").get("start", 0.2) +
+                                60.0 / std::abs(cfg.section("rheometer").get("rpm", 600.0)));
+    }
+    cmd += " --from " + fmt(from, "%.17g") + " --label" + labels + " --out '" + root +
+           "/torque' > '" + root + "/torque_stats.txt' && '" + python + "' '" + src +
+           "/tools/compare_runs.py' '" + root + "/torque' > /dev/null";
+    if (std::system(cmd.c_str()) != 0)
+      std::cerr << "warning: the torque plot failed (" << cmd << ")\n";
+    else
+      std::cout << "torque plot: " << fs::absolute(root + "/torque.png").string() << "\n";
+  }
   std::cout << "rheometer study table: " << fs::absolute(root + "/study.csv").string() << "\n"
             << table.str();
   return 0;
