@@ -168,9 +168,12 @@ int run_rheometer_study(const StudyOptions& opt) {
     if (opt.end_time > 0) ro.sets.push_back("run.end_time=" + fmt(opt.end_time, "%.17g"));
     const double t_before = last_time(dir + "/timeseries.csv");
     const bool resumable = fs::exists(dir + "/checkpoint.h5") && st.rfind("finished", 0) != 0;
-    const bool done =
-        st.rfind("finished", 0) == 0 &&
-        (opt.end_time <= 0 || t_before >= opt.end_time * (1 - 1e-3));  // rows sit on steps
+    // Done: finished, and (with --end-time) its last row within one output interval of the end.
+    double interval = 0;
+    if (fs::exists(dir + "/config.toml"))
+      interval = Config::from_file(dir + "/config.toml").section("output").get("interval", 0.0);
+    const bool done = st.rfind("finished", 0) == 0 &&
+                      (opt.end_time <= 0 || t_before >= opt.end_time - interval * (1 + 1e-9));
     double wall = 0;
     if (!done) {
       if (resumable || st.rfind("finished", 0) == 0) {
