@@ -224,14 +224,14 @@ int run_rheometer_study(const StudyOptions& opt) {
     std::string labels;
     for (const Case* c : todo) {
       cmd += " '" + root + "/" + c->name + "'";
-      labels += " '" + c->name + "'";
+      labels += " --label '" + c->name + "'";
       const Config cfg = Config::from_file(root + "/" + c->name + "/config.toml");
       from = std::max(from, cfg.section("rheometer").get("start", 0.2) +
                                 60.0 / std::abs(cfg.section("rheometer").get("rpm", 600.0)));
     }
-    cmd += " --from " + fmt(from, "%.17g") + " --label" + labels + " --out '" + root +
-           "/torque' > '" + root + "/torque_stats.txt' && '" + python + "' '" + src +
-           "/tools/compare_runs.py' '" + root + "/torque' > /dev/null";
+    cmd += " --from " + fmt(from, "%.17g") + labels + " --out '" + root + "/torque' > '" + root +
+           "/torque_stats.txt' && '" + python + "' '" + src + "/tools/compare_runs.py' '" + root +
+           "/torque' > /dev/null";
     if (std::system(cmd.c_str()) != 0)
       std::cerr << "warning: the torque plot failed (" << cmd << ")\n";
     else
