@@ -131,7 +131,8 @@ class DemSolver {
   RowSums row_sums_;
   std::vector<double> wall_partials_;  // block partials of the wall loads (reused) // i-side pair
                                        // sums of the step
-  std::vector<std::vector<Vec3>> wall_ref_;  // moving mesh vertices, box corners at the last rebuild
+  std::vector<std::vector<Vec3>>
+      wall_ref_;  // moving mesh vertices, box corners at the last rebuild
   std::vector<std::uint8_t> remove_flag_;
   double t_ = 0;
   std::int64_t step_ = 0, rebuilds_ = 0, lost_ = 0, next_id_ = 0;
