@@ -1,0 +1,61 @@
+#include "lbm/boundary/bounce_back.hpp"
+
+#include "core/deterministic_sum.hpp"
+#include "lbm/d3q19.hpp"
+
+namespace lbdem::lbm {
+
+std::vector<BounceBackLinks> build_links(const FlagField& flags, int n_bodies) {
+  std::vector<BounceBackLinks> links(static_cast<std::size_t>(n_bodies));
+  const Grid& g = flags.grid();
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const Index n = g.index(x, y, z);
+        if (!flags.fluid(n)) continue;
+        for (int q = 1; q < kQ; ++q) {
+          const Index s = g.neighbor(x, y, z, q);
+          const CellFlag body = flags.at(s);
+          if (body == kFluid || body > n_bodies) continue;
+          auto& l = links[body - 1u];
+          l.fluid.push_back(n);
+          l.solid.push_back(s);
+          l.dir.push_back(std::uint8_t(q));
+          l.correction.push_back(0.0);
+        }
+      }
+  return links;
+}
+
+void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity& u, double rho_w) {
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const int q = links.dir[k];
+    if (!u) {
+      links.correction[k] = 0.0;
+      continue;
+    }
+    const auto [ix, iy, iz] = g.coordinates(links.fluid[k]);
+    const Vec3 x(ix, iy, iz);
+    const Vec3 c(kCx[q], kCy[q], kCz[q]);
+    links.correction[k] = -2.0 * kW[q] * rho_w * c.dot(u(x + 0.5 * c)) / kCs2;
+  }
+}
+
+Vec3 apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links) {
+  const bool swapped = now == AaState::swapped;
+  // The summand applies its link as a side effect: deterministic_sum calls it once per k.
+  return deterministic_sum(
+      links.size(),
+      [&](std::size_t k) -> Vec3 {
+        const int q = links.dir[k], o = opposite(q);
+        double& from = swapped ? pdf.at(o, links.fluid[k]) : pdf.at(q, links.solid[k]);
+        double& to = swapped ? pdf.at(q, links.solid[k]) : pdf.at(o, links.fluid[k]);
+        const double post = from;  // f_q*(x, t)
+        to = post + links.correction[k];
+        const double m = 2.0 * post + links.correction[k];
+        return Vec3(kCx[q] * m, kCy[q] * m, kCz[q] * m);
+      },
+      Vec3(Vec3::Zero()));
+}
+
+}  // namespace lbdem::lbm

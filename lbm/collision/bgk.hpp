@@ -1,0 +1,46 @@
+#pragma once
+// BGK single-relaxation-time collision (Bhatnagar, Gross & Krook 1954; Qian et al. 1992):
+//   f_q <- f_q - omega (f_q - f_q^eq) + (1 - omega/2) S_q,   omega = 1/tau,
+// with Guo's source S_q (forcing/guo.hpp). Its wall location under bounce-back depends on tau
+// (exact only at the magic combination (tau - 1/2)^2 = 3/16), so BGK is second order, not exact.
+#include "lbm/cell.hpp"
+#include "lbm/collision/collision_operator.hpp"
+#include "lbm/d3q19.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace lbdem::lbm {
+
+struct Bgk {
+  static constexpr std::string_view name = "bgk";
+  double omega;  // 1/tau [-], 0 < omega < 2
+
+  static Bgk from_tau(double tau) {
+    if (!(tau > 0.5))
+      throw std::invalid_argument("BGK needs tau > 1/2, got " + std::to_string(tau));
+    return {1.0 / tau};
+  }
+  double viscosity() const { return viscosity_from_tau(1.0 / omega); }
+
+  template <bool kForced>
+  void relax(double (&f)[kQ], const CellMoments& m, const CellForce& force) const {
+    const double usq = 1.5 * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
+    [[maybe_unused]] const double source = 1.0 - 0.5 * omega;
+    [[maybe_unused]] const double uf = 3.0 * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    static_for<kQ>([&](auto qc) {
+      constexpr int q = decltype(qc)::value;
+      const double cu = dot_c<q>(m.ux, m.uy, m.uz);
+      const double feq = kW[q] * m.rho * (1.0 + 3.0 * cu + 4.5 * cu * cu - usq);
+      double post = f[q] + omega * (feq - f[q]);
+      if constexpr (kForced) {
+        const double cf = dot_c<q>(force.fx, force.fy, force.fz);
+        post += source * kW[q] * (3.0 * cf - uf + 9.0 * cu * cf);
+      }
+      f[q] = post;
+    });
+  }
+};
+
+}  // namespace lbdem::lbm

@@ -1,0 +1,89 @@
+#pragma once
+// The lattice: nx x ny x nz fluid-capable cells plus one ghost layer on every side, x fastest.
+// Ghost cells hold the solid of wall faces; periodic axes wrap indices instead, so their ghosts are
+// never touched (no copy pass, and a row stays contiguous for the vectorised kernel).
+#include "core/types.hpp"
+#include "lbm/d3q19.hpp"
+
+#include <array>
+
+namespace lbdem::lbm {
+
+class Grid {
+ public:
+  Grid(int nx, int ny, int nz, std::array<bool, 3> periodic = {true, true, true})
+      : n_{nx, ny, nz}, periodic_(periodic), sx_(nx + 2), sy_(ny + 2) {}
+
+  int nx() const { return n_[0]; }
+  int ny() const { return n_[1]; }
+  int nz() const { return n_[2]; }
+  int extent(int axis) const { return n_[axis]; }
+  bool periodic(int axis) const { return periodic_[axis]; }
+
+  /// Storage index of cell (x, y, z); -1 and n are the ghost layers. The one place the layout
+  /// lives.
+  Index index(int x, int y, int z) const { return (x + 1) + sx_ * ((y + 1) + sy_ * (z + 1)); }
+  /// Inverse of index(): {x, y, z} of storage cell n.
+  std::array<int, 3> coordinates(Index n) const {
+    return {int(n % sx_) - 1, int(n / sx_ % sy_) - 1, int(n / (sx_ * sy_)) - 1};
+  }
+  /// Cells in storage, ghosts included.
+  Index storage_cells() const { return sx_ * sy_ * Index(n_[2] + 2); }
+  /// Interior cells, and their compact index (no ghosts, x fastest) used by output fields.
+  Index cells() const { return Index(n_[0]) * n_[1] * n_[2]; }
+  Index compact_index(int x, int y, int z) const {
+    return x + Index(n_[0]) * (y + Index(n_[1]) * z);
+  }
+
+  /// Coordinate of the neighbour at x + d along `axis`: wrapped on a periodic axis, else the
+  /// ghost (-1 or n) when it leaves the interior.
+  int shift(int axis, int x, int d) const {
+    int s = x + d;
+    if (periodic_[axis]) s = s < 0 ? s + n_[axis] : (s >= n_[axis] ? s - n_[axis] : s);
+    return s;
+  }
+  /// Storage index of the neighbour x + c_q.
+  Index neighbor(int x, int y, int z, int q) const {
+    return index(shift(0, x, kCx[q]), shift(1, y, kCy[q]), shift(2, z, kCz[q]));
+  }
+  /// neighbor(x, y, z, q) - index(x, y, z) for all q.
+  std::array<Index, kQ> neighbor_offsets(int x, int y, int z) const {
+    std::array<Index, kQ> off{};
+    const Index n = index(x, y, z);
+    for (int q = 0; q < kQ; ++q) off[q] = neighbor(x, y, z, q) - n;
+    return off;
+  }
+
+ private:
+  std::array<int, 3> n_;
+  std::array<bool, 3> periodic_;
+  Index sx_, sy_;
+};
+
+/// Calls body(y, z) for every interior row, rows split statically over the OpenMP threads
+/// (each row is written by exactly one thread, so results do not depend on the thread count).
+template <class Body>
+void for_each_row(const Grid& g, Body&& body) {
+  const int ny = g.ny(), nz = g.nz();
+#pragma omp parallel for collapse(2) schedule(static)
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y) body(y, z);
+}
+
+/// The x ranges [x0, x1) of a row over which the neighbour offsets are constant: on a periodic x
+/// axis the first and last cells wrap, so they are ranges of their own.
+template <class Body>
+void for_each_x_range(const Grid& g, Body&& body) {
+  const int nx = g.nx();
+  if (!g.periodic(0)) {
+    body(0, nx);
+  } else if (nx >= 3) {
+    body(0, 1);
+    body(1, nx - 1);
+    body(nx - 1, nx);
+  } else {
+    for (int x = 0; x < nx; ++x) body(x, x + 1);
+  }
+}
+
+}  // namespace lbdem::lbm

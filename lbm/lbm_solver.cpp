@@ -1,0 +1,148 @@
+#include "lbm/lbm_solver.hpp"
+
+#include "core/error.hpp"
+#include "lbm/equilibrium.hpp"
+#include "lbm/moments.hpp"
+#include "lbm/stream_collide.hpp"
+
+#include <stdexcept>
+#include <variant>
+
+namespace lbdem::lbm {
+
+namespace {
+Grid make_grid(const LbmSettings& s) {
+  if (s.nx < 1 || s.ny < 1 || s.nz < 1)
+    throw std::invalid_argument("lattice needs at least one cell per axis");
+  return Grid(s.nx, s.ny, s.nz, s.faces.periodic_axes());
+}
+}  // namespace
+
+LbmSolver::LbmSolver(const LbmSettings& s) : settings_(s), pdf_(make_grid(s)), flags_(pdf_.grid()) {
+  std::array<CellFlag, 6> marks{};
+  for (int f = 0; f < 6; ++f) {
+    if (s.faces[f].kind != FaceKind::wall) continue;
+    const Vec3 u = s.faces[f].wall_velocity;
+    WallVelocity wv;
+    if (!u.isZero()) wv = [u](const Vec3&) { return u; };
+    face_body_[std::size_t(f)] = add_body(std::string(BoxFaces::kNames[std::size_t(f)]), wv);
+    marks[std::size_t(f)] = CellFlag(face_body_[std::size_t(f)]);
+  }
+  mark_box_faces(flags_, marks);
+  initialize([](int, int, int, double& rho, Vec3& u) {
+    rho = 1.0;
+    u.setZero();
+  });
+}
+
+int LbmSolver::add_body(std::string name, WallVelocity u) {
+  if (int(bodies_.size()) >= kMaxBodies)
+    throw std::invalid_argument("at most 255 solid bodies per lattice");
+  bodies_.push_back({std::move(name), std::move(u), {}, Vec3::Zero()});
+  links_dirty_ = true;
+  return int(bodies_.size());
+}
+
+void LbmSolver::set_cell(int x, int y, int z, int body) {
+  if (body < 0 || body > body_count()) throw std::invalid_argument("unknown body id");
+  flags_.set(x, y, z, CellFlag(body));
+  links_dirty_ = true;
+}
+
+void LbmSolver::set_wall_velocity(int body, WallVelocity u) {
+  Body& b = bodies_[std::size_t(body - 1)];
+  b.velocity = std::move(u);
+  set_wall_velocity_terms(b);
+}
+
+void LbmSolver::set_wall_velocity_terms(Body& b) {
+  lbm::set_wall_velocity(b.links, grid(), b.velocity, settings_.wall_density);
+}
+
+void LbmSolver::rebuild_links() {
+  auto lists = build_links(flags_, body_count());
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    bodies_[k].links = std::move(lists[k]);
+    set_wall_velocity_terms(bodies_[k]);
+  }
+  links_dirty_ = false;
+}
+
+void LbmSolver::initialize(
+    const std::function<void(int x, int y, int z, double& rho, Vec3& u)>& init) {
+  const Grid& g = grid();
+  const double rho_w = settings_.wall_density;
+  for (int q = 0; q < kQ; ++q) {
+    double* f = pdf_.dir(q);
+    const double rest = kW[q] * rho_w;
+    for (Index n = 0; n < pdf_.stride(); ++n) f[n] = rest;
+  }
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const Index n = g.index(x, y, z);
+        if (!flags_.fluid(n)) continue;
+        double rho = 1.0;
+        Vec3 u = Vec3::Zero();
+        init(x, y, z, rho, u);
+        for (int q = 0; q < kQ; ++q) pdf_.at(q, n) = equilibrium(q, rho, u.x(), u.y(), u.z());
+      }
+  state_ = AaState::natural;
+}
+
+void LbmSolver::enable_force_field() {
+  if (has_force_field()) return;
+  for (auto& f : force_) f.assign(std::size_t(grid().storage_cells()), 0.0);
+}
+
+void LbmSolver::set_cell_force(int x, int y, int z, const Vec3& f) {
+  if (!has_force_field()) throw std::logic_error("set_cell_force before enable_force_field");
+  const auto n = std::size_t(grid().index(x, y, z));
+  for (int a = 0; a < 3; ++a) force_[std::size_t(a)][n] = f[a];
+}
+
+template <class Fn>
+void LbmSolver::with_forcing(Fn&& fn) const {
+  const Vec3& b = settings_.body_force;
+  const CellForce uniform{b.x(), b.y(), b.z()};
+  if (has_force_field())
+    fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
+  else if (!b.isZero())
+    fn(UniformForce{uniform});
+  else
+    fn(NoForce{});
+}
+
+void LbmSolver::step() {
+  if (links_dirty_) rebuild_links();
+  std::visit(
+      [&](const auto& op) {
+        with_forcing([&](const auto& forcing) { stream_collide(pdf_, state_, op, forcing); });
+      },
+      settings_.collision);
+  state_ = after_step(state_);
+  for (Body& b : bodies_) b.force = apply_bounce_back(pdf_, state_, b.links);
+  ++steps_;
+}
+
+CellMoments LbmSolver::moments(int x, int y, int z) const {
+  CellMoments m{};
+  with_forcing([&](const auto& forcing) { m = cell_moments_at(pdf_, state_, forcing, x, y, z); });
+  return m;
+}
+
+void LbmSolver::density(std::vector<double>& rho) const {
+  with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, &rho, nullptr); });
+}
+
+void LbmSolver::velocity(std::vector<Vec3>& u) const {
+  with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, nullptr, &u); });
+}
+
+double LbmSolver::total_mass() const {
+  std::vector<double> rho;
+  density(rho);
+  return lbm::total_mass(rho);
+}
+
+}  // namespace lbdem::lbm
