@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# ./lbdem bench [--peers] [--n N] [--steps S]
+# ./lbdem bench [--peers] [--n N] [--steps S] [--lbm-n "64 128"] [--no-dem] [--no-lbm]
 # lbdem's particle-steps/s on the settled-bed case of ../shared/bench (N = 20,000 and 100,000, or the
-# one --n) on 1 and 2 threads; with --peers, LIGGGHTS and LAMMPS (and STREAM) run the same case in the same invocation
-# through ../shared/bench/run_all.sh, and the ratios are printed. Only ratios from one run compare.
+# one --n) and its MLUPS on the periodic Taylor-Green box (64^3 and 128^3), on 1 and 2 threads; with
+# --peers, STREAM, Palabos, LIGGGHTS and LAMMPS run the same cases in the same invocation through
+# ../shared/bench/run_all.sh, and the ratios are printed. Only ratios from one run compare.
 set -euo pipefail
 BUILD_DIR="$1"; shift
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-PEERS=0 SIZES="20000 100000" STEPS="" REPS=${REPS:-1}
+PEERS=0 SIZES="20000 100000" STEPS="" REPS=${REPS:-1} LBM_SIZES="64 128" DEM=1 LBM=1
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --peers) PEERS=1 ;;
     --n) SIZES="$2"; shift ;;
     --steps) STEPS="$2"; shift ;;
-    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
-    *) echo "lbdem bench: unknown option '$1' (known: --peers, --n N, --steps S)" >&2; exit 2 ;;
+    --lbm-n) LBM_SIZES="$2"; shift ;;
+    --no-dem) DEM=0 ;;
+    --no-lbm) LBM=0 ;;
+    -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
+    *) echo "lbdem bench: unknown option '$1' (known: --peers, --n N, --steps S, --lbm-n \"N...\", --no-dem, --no-lbm)" >&2; exit 2 ;;
   esac
   shift
 done
@@ -21,22 +25,35 @@ WORK="${LBDEM_BENCH_WORK:-${TMPDIR:-/tmp}/lbdem-bench}"
 mkdir -p "$WORK"
 TABLE="$WORK/lbdem_table_$(date +%Y%m%d_%H%M%S).txt"
 echo "# lbdem bench on $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')" | tee "$TABLE"
-for n in $SIZES; do
-  args=(--n "$n" --cache "$WORK" --threads 1 2)
-  [[ -n $STEPS ]] && args+=(--steps "$STEPS")
-  "$BUILD_DIR/bin/lbdem-bench-dem" "${args[@]}" | tee -a "$TABLE"
-done
+if [[ $DEM == 1 ]]; then
+  for n in $SIZES; do
+    args=(--n "$n" --cache "$WORK" --threads 1 2)
+    [[ -n $STEPS ]] && args+=(--steps "$STEPS")
+    "$BUILD_DIR/bin/lbdem-bench-dem" "${args[@]}" | tee -a "$TABLE"
+  done
+fi
+if [[ $LBM == 1 ]]; then
+  # shellcheck disable=SC2086
+  "$BUILD_DIR/bin/lbdem-bench-lbm" --n $LBM_SIZES --threads 1 2 | tee -a "$TABLE"
+fi
 
 if [[ $PEERS == 1 ]]; then
   SHARED="$ROOT/../shared/bench"
   [[ -f $SHARED/run_all.sh ]] || { echo "lbdem bench: $SHARED/run_all.sh not found" >&2; exit 1; }
   need=()
-  for p in liggghts lammps openmpi-bin; do dpkg-query -W -f='${db:Status-Abbrev}' "$p" 2>/dev/null | grep -q '^ii' || need+=("$p"); done
+  pkgs=(openmpi-bin libopenmpi-dev make)
+  [[ $DEM == 1 ]] && pkgs+=(liggghts lammps)
+  [[ $LBM == 1 ]] && pkgs+=(libplb-dev libeigen3-dev libtinyxml-dev)
+  for p in "${pkgs[@]}"; do dpkg-query -W -f='${db:Status-Abbrev}' "$p" 2>/dev/null | grep -q '^ii' || need+=("$p"); done
   if ((${#need[@]})); then
     sudo=(); [[ $(id -u) -ne 0 ]] && sudo=(sudo)
     "${sudo[@]}" apt-get update -qq && DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
   fi
-  PEERS_WORK="$WORK/peers" REPS="$REPS" RANKS="1 2" DEM_SIZES="$SIZES" bash "$SHARED/run_all.sh" stream liggghts lammps 2>/dev/null | tee -a "$TABLE"
+  sections=(stream)
+  [[ $LBM == 1 ]] && sections+=(palabos)
+  [[ $DEM == 1 ]] && sections+=(liggghts lammps)
+  PEERS_WORK="$WORK/peers" REPS="$REPS" RANKS="1 2" DEM_SIZES="$SIZES" PLB_SIZES="$LBM_SIZES" \
+    bash "$SHARED/run_all.sh" "${sections[@]}" 2>/dev/null | tee -a "$TABLE"
   # Ratios: lbdem per thread against the best peer per rank, and lbdem's 1 -> 2 thread speed-up.
   awk '
     { for (i = 3; i <= NF; i++) if ($i == "particle-steps/s") { v = $(i-1) + 0; t = $(i-2); break }
@@ -47,6 +64,20 @@ if [[ $PEERS == 1 ]]; then
     END {
       for (k in l) if (best[k] > 0) printf "ratio lbdem / best peer, %s: %.2f\n", k, l[k] / best[k]
       for (n in one) if (one[n] > 0 && two[n] > 0) printf "lbdem speed-up 1 -> 2 threads, N=%s: %.2f\n", n, two[n] / one[n]
+    }' "$TABLE" | tee -a "$TABLE"
+  # LBM: lbdem against Palabos per size and thread/rank count, and against the double-precision
+  # roofline (304 B/cell) of the same run's STREAM triad.
+  awk '
+    /^lbdem LBM TGV/ { n = $0; sub(/.*N=/, "", n); sub(/,.*/, "", n)
+      t = $0; sub(/.*, /, "", t); sub(/ thread.*/, "", t)
+      m = $0; sub(/ MLUPS.*/, "", m); sub(/.*: /, "", m); l[n " " t] = m + 0 }
+    /^palabos / { n = substr($0, 12, 44); sub(/.*TGV /, "", n); sub(/\^3.*/, "", n)
+      p[n " " (substr($0, 57, 5) + 0)] = substr($0, 63, 14) + 0 }
+    /^roofline +D3Q19 double/ { r[substr($0, 57, 5) + 0] = substr($0, 63, 14) + 0 }
+    END {
+      for (k in l) { split(k, a, " ")
+        if (p[k] > 0) printf "ratio lbdem / Palabos, TGV %s^3 at %s thread(s)/rank(s): %.2f\n", a[1], a[2], l[k] / p[k]
+        if (r[a[2]] > 0) printf "lbdem share of the double roofline, TGV %s^3 at %s thread(s): %.0f %%\n", a[1], a[2], 100 * l[k] / r[a[2]] }
     }' "$TABLE" | tee -a "$TABLE"
 fi
 echo "# table: $TABLE"
