@@ -69,7 +69,7 @@ if [[ $PEERS == 1 ]]; then
   # roofline (304 B/cell) of the same run's STREAM triad.
   awk '
     /^lbdem LBM TGV/ { n = $0; sub(/.*N=/, "", n); sub(/,.*/, "", n)
-      t = $0; sub(/.*, /, "", t); sub(/ thread.*/, "", t)
+      t = $0; sub(/.*N=[0-9]+, /, "", t); sub(/ thread.*/, "", t)
       m = $0; sub(/ MLUPS.*/, "", m); sub(/.*: /, "", m); l[n " " t] = m + 0 }
     /^palabos / { n = substr($0, 12, 44); sub(/.*TGV /, "", n); sub(/\^3.*/, "", n)
       p[n " " (substr($0, 57, 5) + 0)] = substr($0, 63, 14) + 0 }

@@ -11,8 +11,15 @@ namespace lbdem::lbm {
 
 class Grid {
  public:
-  Grid(int nx, int ny, int nz, std::array<bool, 3> periodic = {true, true, true})
-      : n_{nx, ny, nz}, periodic_(periodic), sx_(nx + 2), sy_(ny + 2) {}
+  /// aligned_rows: start every row's cell 0 on a 64-byte boundary (8 doubles), padding the rows;
+  /// streaming stores need it (bench/lbm_bench.cpp), the AA kernel does not.
+  Grid(int nx, int ny, int nz, std::array<bool, 3> periodic = {true, true, true},
+       bool aligned_rows = false)
+      : n_{nx, ny, nz},
+        periodic_(periodic),
+        lead_(aligned_rows ? 8 : 1),
+        sx_(aligned_rows ? 8 + (nx + 1 + 7) / 8 * 8 : nx + 2),
+        sy_(ny + 2) {}
 
   int nx() const { return n_[0]; }
   int ny() const { return n_[1]; }
@@ -22,10 +29,10 @@ class Grid {
 
   /// Storage index of cell (x, y, z); -1 and n are the ghost layers. The one place the layout
   /// lives.
-  Index index(int x, int y, int z) const { return (x + 1) + sx_ * ((y + 1) + sy_ * (z + 1)); }
+  Index index(int x, int y, int z) const { return (x + lead_) + sx_ * ((y + 1) + sy_ * (z + 1)); }
   /// Inverse of index(): {x, y, z} of storage cell n.
   std::array<int, 3> coordinates(Index n) const {
-    return {int(n % sx_) - 1, int(n / sx_ % sy_) - 1, int(n / (sx_ * sy_)) - 1};
+    return {int(n % sx_ - lead_), int(n / sx_ % sy_) - 1, int(n / (sx_ * sy_)) - 1};
   }
   /// Cells in storage, ghosts included.
   Index storage_cells() const { return sx_ * sy_ * Index(n_[2] + 2); }
@@ -57,6 +64,7 @@ class Grid {
  private:
   std::array<int, 3> n_;
   std::array<bool, 3> periodic_;
+  Index lead_;  // position of x = 0 in a row (the ghost x = -1 sits just before it)
   Index sx_, sy_;
 };
 

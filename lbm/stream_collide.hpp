@@ -2,12 +2,21 @@
 // The fused stream-collide step on the AA pattern (aa_pattern.hpp), generic in the collision
 // operator and the forcing policy.
 //
-// Scheme chosen by benchmark (bench/lbm_bench.cpp --scheme aa ab nt, periodic Taylor-Green box,
-// BGK, double, N = 64, 1 thread, 2-core Xeon VM with the other core busy, 2026-11-22):
-//   aa (in place, this kernel) 26.7 MLUPS, ab (two lattices, ordinary stores) 19.7 MLUPS,
-//   nt (two lattices, non-temporal stores) 3.8 MLUPS.
-// AA moves the fewest bytes (304 B/cell, no write-allocate) and was fastest. At 8 GB/s it is still
-// compute-bound, a third of the STREAM-triad roofline: the 75 % target needs a faster collide.
+// Scheme chosen by benchmark: bench/lbm_bench.cpp --scheme aa ab nt, the periodic Taylor-Green
+// box of ../shared/bench (BGK, double, 200 steps), GCC 12 -O3 -march=native, 2-core KVM Xeon
+// (Sapphire Rapids class), machine otherwise idle. STREAM triad in the same run: 15.1 GB/s on 1
+// thread, 28.4 GB/s on 2, a 304 B/cell roofline of 49.6 and 93.4 MLUPS. MLUPS:
+//                                          N=64 1 thr   N=64 2 thr   N=128 1 thr   N=128 2 thr
+//   AA pattern, in place (this kernel)        52.2        101.8         50.7          98.9
+//   two lattices, pull, ordinary stores       40.5         76.3         33.7          64.4
+//   two lattices, pull, each row written      30.7         60.3         35.9          69.1
+//     by _mm256_stream_pd from an L1 buffer (rows padded to 64 B; unpadded rows: 7-17 MLUPS)
+// Other runs agreed within 15 % (AA: 47-58, 95-115); at N = 192 (1.1 GB), 1 thread: AA 52,
+// ordinary stores 34, streaming 33. AA reaches the roofline (102-109 %; the STREAM count leaves
+// out the triad's own write-allocate, so 100 % is not a hard ceiling). Ordinary stores sit at
+// the 2/3 write-allocate cap once the lattice leaves the cache (N = 128: 68 %). Streaming stores
+// removed that traffic but not the time (72-74 %), and need padded rows. AA also halves the memory
+// (one lattice) and needs no ghost exchange: periodic axes wrap indices (grid.hpp).
 #include "core/types.hpp"
 #include "lbm/aa_pattern.hpp"
 #include "lbm/cell.hpp"
