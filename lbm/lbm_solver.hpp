@@ -1,7 +1,8 @@
 #pragma once
 // The gas solver: owns the lattice, populations, geometry flags, wall bodies and force field, and
 // advances them one stream-collide step at a time. Lattice units throughout (dx = dt = 1); the SI
-// conversion lives in units.hpp (to come) and in the scenarios.
+// conversion lives in units.hpp (LatticeUnits, with the tau/Mach/pressure checks) and in the
+// scenarios.
 //
 // A step: kernel (stream_collide.hpp) for the operator and forcing in use, then each body's
 // bounce-back links (bounce_back.hpp), which also give its momentum-exchange force.
