@@ -175,15 +175,11 @@ int main(int argc, char** argv) {
     return kToolErrorExit;
   }
   return guarded_main("lbdem-compare-runs", [&] {
-    if (!(o.from < o.to)) throw ToolError("empty window: --from must be below --to");
-    if (!o.labels.empty() && o.labels.size() != o.dirs.size())
-      throw ToolError(std::to_string(o.labels.size()) + " --label for " +
-                      std::to_string(o.dirs.size()) + " run folders; give one per folder or none");
+    check_window_and_labels(o.from, o.to, o.labels.size(), o.dirs.size());
     std::vector<Result> res;
     for (std::size_t k = 0; k < o.dirs.size(); ++k) {
       const RunFolder run = RunFolder::open(o.dirs[k]);
-      res.push_back(
-          analyse(run, o.labels.empty() ? default_label(run.size_factor) : o.labels[k], o));
+      res.push_back(analyse(run, run_label(o.labels, k, run.size_factor), o));
     }
     print_table(o.column, res);
     if (!o.out.empty()) write_csvs(o.out, o.column, res);

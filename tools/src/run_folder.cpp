@@ -115,6 +115,17 @@ std::string default_label(double size_factor) {
   return buf;
 }
 
+void check_window_and_labels(double from, double to, std::size_t labels, std::size_t dirs) {
+  if (!(from < to)) throw ToolError("empty window: --from must be below --to");
+  if (labels != 0 && labels != dirs)
+    throw ToolError(std::to_string(labels) + " --label for " + std::to_string(dirs) +
+                    " run folders; give one per folder or none");
+}
+
+std::string run_label(const std::vector<std::string>& labels, std::size_t k, double size_factor) {
+  return labels.empty() ? default_label(size_factor) : labels[k];
+}
+
 std::string join(const std::vector<std::string>& words, std::string_view sep) {
   std::string s;
   for (std::size_t k = 0; k < words.size(); ++k) s += (k ? std::string(sep) : "") + words[k];

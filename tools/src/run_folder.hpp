@@ -37,6 +37,11 @@ Table read_csv(const std::string& path);
 double size_factor_from_toml(std::string_view toml_text, const std::string& source);
 /// "l = 2.5" (%g of the size factor).
 std::string default_label(double size_factor);
+/// The window and --label checks every tool makes (ToolError on an empty window or a label count
+/// that is neither 0 nor one per folder).
+void check_window_and_labels(double from, double to, std::size_t labels, std::size_t dirs);
+/// Label of run k: labels[k], or default_label(size_factor) when no labels were given.
+std::string run_label(const std::vector<std::string>& labels, std::size_t k, double size_factor);
 std::string join(const std::vector<std::string>& words, std::string_view sep);
 
 struct Material {
