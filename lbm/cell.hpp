@@ -5,8 +5,11 @@
 namespace lbdem::lbm {
 
 /// Density and the physical velocity of one cell [lattice units].
+/// inv_eps = 1/eps of the porous (Guo & Zhao 2002) form: it multiplies the terms of second order
+/// in u of the equilibrium and of the Guo source; 1 without porosity.
 struct CellMoments {
   double rho, ux, uy, uz;
+  double inv_eps = 1.0;
 };
 
 /// Body force density acting on one cell [lattice units: mass / (cell dt^2)].

@@ -5,7 +5,10 @@
 #include "lbm/moments.hpp"
 #include "lbm/stream_collide.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 #include <variant>
 
 namespace lbdem::lbm {
@@ -38,7 +41,7 @@ LbmSolver::LbmSolver(const LbmSettings& s) : settings_(s), pdf_(make_grid(s)), f
 int LbmSolver::add_body(std::string name, WallVelocity u) {
   if (int(bodies_.size()) >= kMaxBodies)
     throw std::invalid_argument("at most 255 solid bodies per lattice");
-  bodies_.push_back({std::move(name), std::move(u), {}, Vec3::Zero()});
+  bodies_.push_back({std::move(name), std::move(u), {}, Vec3::Zero(), {}});
   links_dirty_ = true;
   return int(bodies_.size());
 }
@@ -121,8 +124,45 @@ void LbmSolver::step() {
       },
       settings_.collision);
   state_ = after_step(state_);
-  for (Body& b : bodies_) b.force = apply_bounce_back(pdf_, state_, b.links);
+  for (Body& b : bodies_) b.load = apply_bounce_back(pdf_, state_, b.links, b.origin);
   ++steps_;
+}
+
+void LbmSolver::load_state(const std::vector<double>& populations, AaState s, long steps) {
+  if (Index(populations.size()) != pdf_.size())
+    throw std::invalid_argument("checkpoint holds " + std::to_string(populations.size()) +
+                                " populations, this lattice " + std::to_string(pdf_.size()));
+  std::copy(populations.begin(), populations.end(), pdf_.data());
+  state_ = s;
+  steps_ = steps;
+}
+
+std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rho_max,
+                                                       double u_max) const {
+  const Grid& g = grid();
+  // First bad x of every row (-1: none); rows are independent, so any thread split finds the same.
+  std::vector<int> first_bad(std::size_t(g.ny()) * std::size_t(g.nz()), -1);
+  with_forcing([&](const auto& forcing) {
+    for_each_row(g, [&](int y, int z) {
+      for (int x = 0; x < g.nx(); ++x) {
+        if (!flags_.fluid(g.index(x, y, z))) continue;
+        const CellMoments m = cell_moments_at(pdf_, state_, forcing, x, y, z);
+        const double u2 = m.ux * m.ux + m.uy * m.uy + m.uz * m.uz;
+        // Written so that NaN fails every comparison and lands here.
+        if (!(m.rho >= rho_min && m.rho <= rho_max && u2 <= u_max * u_max)) {
+          first_bad[std::size_t(y) + std::size_t(g.ny()) * std::size_t(z)] = x;
+          return;
+        }
+      }
+    });
+  });
+  for (std::size_t r = 0; r < first_bad.size(); ++r) {
+    if (first_bad[r] < 0) continue;
+    const int x = first_bad[r], y = int(r % std::size_t(g.ny())), z = int(r / std::size_t(g.ny()));
+    const CellMoments m = moments(x, y, z);
+    return UnhealthyCell{x, y, z, m.rho, std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz)};
+  }
+  return std::nullopt;
 }
 
 CellMoments LbmSolver::moments(int x, int y, int z) const {

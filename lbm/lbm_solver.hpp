@@ -18,10 +18,17 @@
 #include "lbm/pdf_field.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace lbdem::lbm {
+
+/// A cell the watchdog rejected [lattice units].
+struct UnhealthyCell {
+  int x, y, z;
+  double rho, speed;
+};
 
 struct LbmSettings {
   int nx = 0, ny = 0, nz = 0;  // interior cells
@@ -54,12 +61,22 @@ class LbmSolver {
   /// step; a cell that turns fluid keeps whatever populations it holds.
   void set_cell(int x, int y, int z, int body);
   void set_wall_velocity(int body, WallVelocity u);
+  /// The point torques on a body are taken about [lattice coordinates]; default the origin.
+  void set_body_origin(int body, const Vec3& x) { bodies_[std::size_t(body - 1)].origin = x; }
 
   // --- State ------------------------------------------------------------------------------------
   /// Equilibrium populations from init(x, y, z, rho, u) on fluid cells, rest equilibrium at the
   /// wall density elsewhere (ghosts, solids); resets to the natural state.
   void initialize(const std::function<void(int x, int y, int z, double& rho, Vec3& u)>& init);
   void step();
+  /// Restores populations, AA state and step count saved from pdf(), state() and steps() (a
+  /// checkpoint); throws std::invalid_argument if the size does not match this lattice.
+  void load_state(const std::vector<double>& populations, AaState s, long steps);
+
+  /// The watchdog: the first fluid cell (storage order) whose density leaves [rho_min, rho_max]
+  /// or whose speed exceeds u_max, or whose moments are not finite; nullopt if all are sane.
+  /// Costs about one step (a read-only pass); bitwise the same answer for any thread count.
+  std::optional<UnhealthyCell> find_unhealthy(double rho_min, double rho_max, double u_max) const;
 
   void set_collision(const CollisionModel& c) { settings_.collision = c; }
   void set_body_force(const Vec3& f) { settings_.body_force = f; }
@@ -70,7 +87,9 @@ class LbmSolver {
 
   // --- Results ----------------------------------------------------------------------------------
   /// Momentum-exchange force of the fluid on a body during the last step [lattice units].
-  const Vec3& wall_force(int body) const { return bodies_[std::size_t(body - 1)].force; }
+  const Vec3& wall_force(int body) const { return bodies_[std::size_t(body - 1)].load.force; }
+  /// Its torque about the body's origin (set_body_origin) [lattice units].
+  const Vec3& wall_torque(int body) const { return bodies_[std::size_t(body - 1)].load.torque; }
   CellMoments moments(int x, int y, int z) const;
   /// Fields over interior cells in compact order; solid cells read 0.
   void density(std::vector<double>& rho) const;
@@ -83,7 +102,8 @@ class LbmSolver {
     std::string name;
     WallVelocity velocity;
     BounceBackLinks links;
-    Vec3 force = Vec3::Zero();
+    Vec3 origin = Vec3::Zero();
+    WallLoad load;
   };
   void rebuild_links();
   void set_wall_velocity_terms(Body& b);

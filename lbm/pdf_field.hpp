@@ -28,6 +28,7 @@ class PdfField {
   double at(int q, Index n) const { return data_[q * stride_ + n]; }
   /// All kQ * stride values (for bitwise comparisons and checkpoints).
   const double* data() const { return data_.get(); }
+  double* data() { return data_.get(); }
   Index size() const { return kQ * stride_; }
 
  private:

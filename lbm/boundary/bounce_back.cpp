@@ -3,6 +3,8 @@
 #include "core/deterministic_sum.hpp"
 #include "lbm/d3q19.hpp"
 
+#include <Eigen/Geometry>
+
 namespace lbdem::lbm {
 
 std::vector<BounceBackLinks> build_links(const FlagField& flags, int n_bodies) {
@@ -22,6 +24,7 @@ std::vector<BounceBackLinks> build_links(const FlagField& flags, int n_bodies) {
           l.solid.push_back(s);
           l.dir.push_back(std::uint8_t(q));
           l.correction.push_back(0.0);
+          l.point.push_back(Vec3(x + 0.5 * kCx[q], y + 0.5 * kCy[q], z + 0.5 * kCz[q]));
         }
       }
   return links;
@@ -41,21 +44,23 @@ void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity
   }
 }
 
-Vec3 apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links) {
+WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+                           const Vec3& origin) {
   const bool swapped = now == AaState::swapped;
   // The summand applies its link as a side effect: deterministic_sum calls it once per k.
   return deterministic_sum(
       links.size(),
-      [&](std::size_t k) -> Vec3 {
+      [&](std::size_t k) -> WallLoad {
         const int q = links.dir[k], o = opposite(q);
         double& from = swapped ? pdf.at(o, links.fluid[k]) : pdf.at(q, links.solid[k]);
         double& to = swapped ? pdf.at(q, links.solid[k]) : pdf.at(o, links.fluid[k]);
         const double post = from;  // f_q*(x, t)
         to = post + links.correction[k];
         const double m = 2.0 * post + links.correction[k];
-        return Vec3(kCx[q] * m, kCy[q] * m, kCz[q] * m);
+        const Vec3 f(kCx[q] * m, kCy[q] * m, kCz[q] * m);
+        return {f, (links.point[k] - origin).cross(f)};
       },
-      Vec3(Vec3::Zero()));
+      WallLoad{});
 }
 
 }  // namespace lbdem::lbm

@@ -35,7 +35,20 @@ struct BounceBackLinks {
   std::vector<Index> solid;        // storage index of its solid neighbour x + c_q
   std::vector<std::uint8_t> dir;   // q, from fluid to solid
   std::vector<double> correction;  // -2 w_q rho_w (c_q . u_w) / c_s^2
+  std::vector<Vec3> point;         // half-way wall point x + c_q / 2 [lattice coordinates]
   std::size_t size() const { return fluid.size(); }
+};
+
+/// Momentum given to a body in one step: force, and torque about the body's reference point
+/// [lattice units].
+struct WallLoad {
+  Vec3 force = Vec3::Zero();
+  Vec3 torque = Vec3::Zero();
+  WallLoad& operator+=(const WallLoad& o) {
+    force += o.force;
+    torque += o.torque;
+    return *this;
+  }
 };
 
 /// Lists every fluid-to-solid link, one list per body id 1 .. n_bodies (entry k - 1 for body k),
@@ -47,7 +60,9 @@ std::vector<BounceBackLinks> build_links(const FlagField& flags, int n_bodies);
 void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity& u, double rho_w);
 
 /// Applies the links for the state the step has just produced; returns the momentum-exchange
-/// force on the body [lattice units].
-Vec3 apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links);
+/// force on the body and its torque about `origin` (lattice coordinates), each link's force
+/// acting at its half-way point [lattice units].
+WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+                           const Vec3& origin = Vec3::Zero());
 
 }  // namespace lbdem::lbm
