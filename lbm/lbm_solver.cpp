@@ -17,19 +17,36 @@ namespace {
 Grid make_grid(const LbmSettings& s) {
   if (s.nx < 1 || s.ny < 1 || s.nz < 1)
     throw std::invalid_argument("lattice needs at least one cell per axis");
+  for (int f = 0; f < 6; ++f) {
+    const double rho = s.faces[f].density;
+    if (s.faces[f].kind == FaceKind::outlet && !(rho > 0 && std::isfinite(rho)))
+      throw InputError("faces." + std::string(BoxFaces::kNames[std::size_t(f)]) + ".density",
+                       to_text(rho), "an outlet density must be positive",
+                       "give the outlet density in lattice units, about 1");
+  }
   return Grid(s.nx, s.ny, s.nz, s.faces.periodic_axes());
+}
+
+WallVelocity uniform_velocity(const Vec3& u) {
+  if (u.isZero()) return {};
+  return [u](const Vec3&) { return u; };
 }
 }  // namespace
 
 LbmSolver::LbmSolver(const LbmSettings& s) : settings_(s), pdf_(make_grid(s)), flags_(pdf_.grid()) {
   std::array<CellFlag, 6> marks{};
   for (int f = 0; f < 6; ++f) {
-    if (s.faces[f].kind != FaceKind::wall) continue;
-    const Vec3 u = s.faces[f].wall_velocity;
-    WallVelocity wv;
-    if (!u.isZero()) wv = [u](const Vec3&) { return u; };
-    face_body_[std::size_t(f)] = add_body(std::string(BoxFaces::kNames[std::size_t(f)]), wv);
-    marks[std::size_t(f)] = CellFlag(face_body_[std::size_t(f)]);
+    const FaceBoundary& face = s.faces[f];
+    std::string name(BoxFaces::kNames[std::size_t(f)]);
+    int body = 0;
+    if (face.kind == FaceKind::wall)
+      body = add_body(std::move(name), uniform_velocity(face.wall_velocity));
+    else if (face.kind == FaceKind::inlet)
+      body = add_inlet(std::move(name), uniform_velocity(face.wall_velocity));
+    else if (face.kind == FaceKind::outlet)
+      body = add_outlet(std::move(name), face.density);
+    face_body_[std::size_t(f)] = body;
+    marks[std::size_t(f)] = CellFlag(body);
   }
   mark_box_faces(flags_, marks);
   initialize([](int, int, int, double& rho, Vec3& u) {
@@ -41,9 +58,30 @@ LbmSolver::LbmSolver(const LbmSettings& s) : settings_(s), pdf_(make_grid(s)), f
 int LbmSolver::add_body(std::string name, WallVelocity u) {
   if (int(bodies_.size()) >= kMaxBodies)
     throw std::invalid_argument("at most 255 solid bodies per lattice");
-  bodies_.push_back({std::move(name), std::move(u), {}, Vec3::Zero(), {}});
+  Body& b = bodies_.emplace_back();
+  b.name = std::move(name);
+  b.velocity = std::move(u);
   links_dirty_ = true;
   return int(bodies_.size());
+}
+
+int LbmSolver::add_inlet(std::string name, WallVelocity u) {
+  return add_body(std::move(name), std::move(u));
+}
+
+int LbmSolver::add_outlet(std::string name, double density) {
+  const int body = add_body(std::move(name));
+  set_outlet_density(body, density);
+  return body;
+}
+
+void LbmSolver::set_outlet_density(int body, double density) {
+  if (!(density > 0 && std::isfinite(density)))
+    throw std::invalid_argument("outlet density must be positive, got " + std::to_string(density));
+  Body& b = bodies_[std::size_t(body - 1)];
+  if (b.outlet_density <= 0) links_dirty_ = true;  // a new outlet needs its velocity samples
+  b.outlet_density = density;
+  b.outlet.density = density;  // an existing outlet: no rebuild, so a ramp per step stays cheap
 }
 
 void LbmSolver::set_cell(int x, int y, int z, int body) {
@@ -65,8 +103,10 @@ void LbmSolver::set_wall_velocity_terms(Body& b) {
 void LbmSolver::rebuild_links() {
   auto lists = build_links(flags_, body_count());
   for (std::size_t k = 0; k < bodies_.size(); ++k) {
-    bodies_[k].links = std::move(lists[k]);
-    set_wall_velocity_terms(bodies_[k]);
+    Body& b = bodies_[k];
+    b.links = std::move(lists[k]);
+    set_wall_velocity_terms(b);
+    if (b.outlet_density > 0) b.outlet = build_outlet(b.links, flags_, b.outlet_density);
   }
   links_dirty_ = false;
 }
@@ -118,13 +158,17 @@ void LbmSolver::with_forcing(Fn&& fn) const {
 
 void LbmSolver::step() {
   if (links_dirty_) rebuild_links();
-  std::visit(
-      [&](const auto& op) {
-        with_forcing([&](const auto& forcing) { stream_collide(pdf_, state_, op, forcing); });
-      },
-      settings_.collision);
+  with_forcing([&](const auto& forcing) {
+    for (Body& b : bodies_)
+      if (b.outlet_density > 0) sample_outlet_velocity(pdf_, state_, forcing, b.outlet);
+    std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, forcing); },
+               settings_.collision);
+  });
   state_ = after_step(state_);
-  for (Body& b : bodies_) b.load = apply_bounce_back(pdf_, state_, b.links, b.origin);
+  for (Body& b : bodies_)
+    b.load = b.outlet_density > 0
+                 ? apply_anti_bounce_back(pdf_, state_, b.links, b.outlet, b.origin)
+                 : apply_bounce_back(pdf_, state_, b.links, b.origin);
   ++steps_;
 }
 

@@ -4,13 +4,16 @@
 // conversion lives in units.hpp (LatticeUnits, with the tau/Mach/pressure checks) and in the
 // scenarios.
 //
-// A step: kernel (stream_collide.hpp) for the operator and forcing in use, then each body's
-// bounce-back links (bounce_back.hpp), which also give its momentum-exchange force.
+// A step: the velocity next to each outlet (open_boundary.hpp), the kernel (stream_collide.hpp)
+// for the operator and forcing in use, then each body's links: bounce-back for walls and velocity
+// inlets (bounce_back.hpp), anti-bounce-back for density outlets; they also give its
+// momentum-exchange force and the mass it passed to the fluid.
 #include "core/types.hpp"
 #include "lbm/aa_pattern.hpp"
 #include "lbm/boundary/bounce_back.hpp"
 #include "lbm/boundary/box_faces.hpp"
 #include "lbm/boundary/flags.hpp"
+#include "lbm/boundary/open_boundary.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/collision/collision_model.hpp"
 #include "lbm/forcing/guo.hpp"
@@ -60,7 +63,17 @@ class LbmSolver {
   /// Makes an interior cell solid (body >= 1) or fluid again (0). Links are rebuilt before the next
   /// step; a cell that turns fluid keeps whatever populations it holds.
   void set_cell(int x, int y, int z, int body);
+  /// Ignored by outlets, whose velocity is free.
   void set_wall_velocity(int body, WallVelocity u);
+  /// A velocity inlet: a body whose bounce-back links carry Ladd's term at the inflow velocity u
+  /// (at each link's half-way point) and the wall density; its cells come from set_cell, as for
+  /// add_body, or from a box face of kind inlet. The same as add_body(name, u), named for intent.
+  int add_inlet(std::string name, WallVelocity u);
+  /// A density outlet: a body whose links apply anti-bounce-back at density rho_out (> 0), i.e.
+  /// pressure rho_out c_s^2 [lattice units]; its cells come from set_cell or a box face.
+  int add_outlet(std::string name, double density);
+  bool is_outlet(int body) const { return bodies_[std::size_t(body - 1)].outlet_density > 0; }
+  void set_outlet_density(int body, double density);
   /// The point torques on a body are taken about [lattice coordinates]; default the origin.
   void set_body_origin(int body, const Vec3& x) { bodies_[std::size_t(body - 1)].origin = x; }
 
@@ -90,6 +103,11 @@ class LbmSolver {
   const Vec3& wall_force(int body) const { return bodies_[std::size_t(body - 1)].load.force; }
   /// Its torque about the body's origin (set_body_origin) [lattice units].
   const Vec3& wall_torque(int body) const { return bodies_[std::size_t(body - 1)].load.torque; }
+  /// Mass that entered the fluid through the body's links during the last step (negative:
+  /// leaving) [lattice units, mass per step]: the inflow of an inlet, minus the outflow of an
+  /// outlet; 0 for a wall at rest, round-off for one moving in its own plane. Over steps, the
+  /// change of total_mass() is the sum of these over all bodies, to round-off.
+  double mass_flow(int body) const { return bodies_[std::size_t(body - 1)].load.mass; }
   CellMoments moments(int x, int y, int z) const;
   /// Fields over interior cells in compact order; solid cells read 0.
   void density(std::vector<double>& rho) const;
@@ -104,6 +122,8 @@ class LbmSolver {
     BounceBackLinks links;
     Vec3 origin = Vec3::Zero();
     WallLoad load;
+    double outlet_density = 0;  // > 0: a density outlet
+    PressureOutlet outlet;      // its velocity samples, built with the links
   };
   void rebuild_links();
   void set_wall_velocity_terms(Body& b);

@@ -1,6 +1,7 @@
 #pragma once
 // Macroscopic fields from the populations in either AA state: rho = sum f_q and the Guo-corrected
-// velocity u = (sum c_q f_q + F/2) / rho (cell.hpp), over interior cells in compact order
+// velocity u = (sum c_q f_q + F/2) / rho (cell.hpp; in a porous medium the superficial velocity of
+// forcing/porous.hpp), over interior cells in compact order
 // (Grid::compact_index). Solid cells report rho = 0 and u = 0.
 #include "core/deterministic_sum.hpp"
 #include "core/types.hpp"
@@ -21,7 +22,8 @@ CellMoments cell_moments_at(const PdfField& pdf, AaState s, const Forcing& forci
   read_pointers(pdf, s, x, y, z, in);  // a single cell is always one x range
   double f[kQ];
   for (int q = 0; q < kQ; ++q) f[q] = *in[q];
-  return cell_moments<Forcing::kActive>(f, forcing.at(pdf.grid().index(x, y, z)));
+  CellForce force;
+  return forcing.moments(f, pdf.grid().index(x, y, z), force);
 }
 
 /// Fills rho and/or u (either may be null) for every interior cell.
@@ -40,7 +42,8 @@ void moment_fields(const PdfField& pdf, AaState s, const Forcing& forcing, const
         if (!flags.fluid(n)) continue;
         double f[kQ];
         for (int q = 0; q < kQ; ++q) f[q] = in[q][i];
-        const CellMoments m = cell_moments<Forcing::kActive>(f, forcing.at(n));
+        CellForce force;
+        const CellMoments m = forcing.moments(f, n, force);
         const auto c = std::size_t(g.compact_index(x0 + i, y, z));
         if (rho) (*rho)[c] = m.rho;
         if (u) (*u)[c] = Vec3(m.ux, m.uy, m.uz);

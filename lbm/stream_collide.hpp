@@ -38,8 +38,8 @@ inline void collide_cells(const C& coll, const Forcing& forcing, const double* c
   for (int i = 0; i < count; ++i) {
     double f[kQ];
     static_for<kQ>([&](auto q) { f[q] = in[q][i]; });
-    const CellForce force = forcing.at(n0 + i);
-    const CellMoments m = cell_moments<Forcing::kActive>(f, force);
+    CellForce force;
+    const CellMoments m = forcing.moments(f, n0 + i, force);
     coll.template relax<Forcing::kActive>(f, m, force);
     static_for<kQ>([&](auto q) { out[q][i] = f[q]; });
   }

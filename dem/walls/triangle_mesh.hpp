@@ -35,9 +35,8 @@ struct TriangleMesh {
   /// non-finite coordinates, or if there are no triangles.
   static TriangleMesh from_triangles(const std::vector<std::array<Vec3, 3>>& tris,
                                      double merge_tol = 1e-12);
-  /// Reads binary or ASCII STL. A file is ASCII if it starts with "solid" and parses as ASCII; a
-  /// binary file may also start with "solid", so otherwise the binary size 84 + 50 n must match.
-  /// `scale` multiplies coordinates (1e-3 for a file in mm). Vertices are merged within 1e-9 of
+  /// Reads binary or ASCII STL through lbdem::read_stl (core/stl.hpp: format detection, `scale`
+  /// multiplies coordinates, 1e-3 for a file in mm). Vertices are merged within 1e-9 of
   /// the bounding-box diagonal: far below any real feature, far above noise such as 1e-17 vs 0. The
   /// vertex order of each facet defines the outward side (right-hand rule); the stored normal is
   /// ignored, since many exporters write zeros there. `key` is the config key named in the

@@ -58,7 +58,7 @@ WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& li
         to = post + links.correction[k];
         const double m = 2.0 * post + links.correction[k];
         const Vec3 f(kCx[q] * m, kCy[q] * m, kCz[q] * m);
-        return {f, (links.point[k] - origin).cross(f)};
+        return {f, (links.point[k] - origin).cross(f), links.correction[k]};
       },
       WallLoad{});
 }

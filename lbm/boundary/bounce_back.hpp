@@ -1,10 +1,15 @@
 #pragma once
 // Half-way bounce-back on a list of links (waLBerla's per-link treatDirection), with Ladd's
 // moving-wall term and the momentum-exchange force:
-//   f_qbar(x, t+1) = f_q*(x, t) - 2 w_q rho_w (c_q . u_w) / c_s^2        (Ladd 1994, JFM 271,
-//   eq. 3.2) F_wall += c_q [ f_q*(x, t) + f_qbar(x, t+1) ] = c_q [ 2 f_q*(x, t) + corr_q ]
+//   f_qbar(x, t+1) = f_q*(x, t) - 2 w_q rho_w (c_q . u_w) / c_s^2   (Ladd 1994, JFM 271, eq. 3.2)
+//   F_wall += c_q [ f_q*(x, t) + f_qbar(x, t+1) ] = c_q [ 2 f_q*(x, t) + corr_q ]
 // for every link from fluid cell x along c_q into a solid cell (Ladd 1994 eq. 3.4; momentum given
 // to the body per step, i.e. the force in lattice units). The wall sits half-way along the link.
+// The mass the link gives the fluid per step is f_qbar(x, t+1) - f_q*(x, t) = corr_q: zero for a
+// wall at rest, cancelling in pairs for a tangentially moving one, and the inflow of a velocity
+// inlet (a "wall" moving into the fluid; Kruger et al. 2017, The Lattice Boltzmann Method,
+// sec. 5.3). For a plug u_w = U e_x on an x face, the five links of one cell give
+// 2 (1/6) rho_w U / c_s^2 = rho_w U, the exact inflow per face cell.
 //
 // Links are listed once at set-up from the flag field; the step applies them after the kernel.
 // With the AA pattern (aa_pattern.hpp) the incoming value is placed where the next read expects it:
@@ -39,14 +44,16 @@ struct BounceBackLinks {
   std::size_t size() const { return fluid.size(); }
 };
 
-/// Momentum given to a body in one step: force, and torque about the body's reference point
-/// [lattice units].
+/// Momentum given to a body in one step: force, and torque about the body's reference point;
+/// and the mass the body gave the fluid in that step (negative: taken out) [lattice units].
 struct WallLoad {
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
+  double mass = 0.0;
   WallLoad& operator+=(const WallLoad& o) {
     force += o.force;
     torque += o.torque;
+    mass += o.mass;
     return *this;
   }
 };
@@ -61,7 +68,7 @@ void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity
 
 /// Applies the links for the state the step has just produced; returns the momentum-exchange
 /// force on the body and its torque about `origin` (lattice coordinates), each link's force
-/// acting at its half-way point [lattice units].
+/// acting at its half-way point, and the mass given to the fluid [lattice units].
 WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
                            const Vec3& origin = Vec3::Zero());
 

@@ -1,6 +1,8 @@
 #pragma once
-// The six faces of the box: each periodic, or a half-way bounce-back wall (optionally moving
-// tangentially) made of the ghost layer behind it. Inlets and outlets will be further kinds.
+// The six faces of the box: each periodic, or a body made of the ghost layer behind it: a half-way
+// bounce-back wall (optionally moving tangentially), a velocity inlet (bounce-back with Ladd's term
+// at the inflow velocity, bounce_back.hpp) or a density outlet (anti-bounce-back,
+// open_boundary.hpp).
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "lbm/boundary/flags.hpp"
@@ -12,11 +14,12 @@
 
 namespace lbdem::lbm {
 
-enum class FaceKind { periodic, wall };
+enum class FaceKind { periodic, wall, inlet, outlet };
 
 struct FaceBoundary {
   FaceKind kind = FaceKind::periodic;
-  Vec3 wall_velocity = Vec3::Zero();  // [lattice units], for kind == wall
+  Vec3 wall_velocity = Vec3::Zero();  // wall: its velocity; inlet: the inflow velocity [lattice]
+  double density = 1.0;               // outlet: rho_out, pressure rho_out c_s^2 [lattice units]
 };
 
 /// Faces in the order x_lo, x_hi, y_lo, y_hi, z_lo, z_hi (face = 2 axis + side).

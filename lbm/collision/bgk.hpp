@@ -26,17 +26,21 @@ struct Bgk {
 
   template <bool kForced>
   void relax(double (&f)[kQ], const CellMoments& m, const CellForce& force) const {
+    // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
     const double usq = 1.5 * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
+    const double q2 = 4.5 * m.inv_eps;
+    const double usq_e = usq * m.inv_eps;
     [[maybe_unused]] const double source = 1.0 - 0.5 * omega;
-    [[maybe_unused]] const double uf = 3.0 * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    [[maybe_unused]] const double uf =
+        3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
     static_for<kQ>([&](auto qc) {
       constexpr int q = decltype(qc)::value;
       const double cu = dot_c<q>(m.ux, m.uy, m.uz);
-      const double feq = kW[q] * m.rho * (1.0 + 3.0 * cu + 4.5 * cu * cu - usq);
+      const double feq = kW[q] * m.rho * (1.0 + 3.0 * cu + q2 * cu * cu - usq_e);
       double post = f[q] + omega * (feq - f[q]);
       if constexpr (kForced) {
         const double cf = dot_c<q>(force.fx, force.fy, force.fz);
-        post += source * kW[q] * (3.0 * cf - uf + 9.0 * cu * cf);
+        post += source * kW[q] * (3.0 * cf - uf + 2.0 * q2 * cu * cf);
       }
       f[q] = post;
     });

@@ -36,10 +36,13 @@ struct Trt {
 
   template <bool kForced>
   void relax(double (&f)[kQ], const CellMoments& m, const CellForce& force) const {
-    const double usq = 1.5 * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
+    // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
+    const double usq = 1.5 * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+    const double q2 = 4.5 * m.inv_eps;
     [[maybe_unused]] const double src_p = 1.0 - 0.5 * omega_plus;
     [[maybe_unused]] const double src_m = 1.0 - 0.5 * omega_minus;
-    [[maybe_unused]] const double uf = 3.0 * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    [[maybe_unused]] const double uf =
+        3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
     // Rest population: even only.
     double d0 = omega_plus * (f[0] - kW[0] * m.rho * (1.0 - usq));
     if constexpr (kForced) d0 += src_p * kW[0] * uf;
@@ -48,13 +51,13 @@ struct Trt {
     static_for<(kQ - 1) / 2>([&](auto kc) {
       constexpr int q = 2 * decltype(kc)::value + 1, o = q + 1;
       const double cu = dot_c<q>(m.ux, m.uy, m.uz);
-      const double eq_p = kW[q] * m.rho * (1.0 + 4.5 * cu * cu - usq);
+      const double eq_p = kW[q] * m.rho * (1.0 + q2 * cu * cu - usq);
       const double eq_m = kW[q] * m.rho * 3.0 * cu;
       double dp = omega_plus * (0.5 * (f[q] + f[o]) - eq_p);
       double dm = omega_minus * (0.5 * (f[q] - f[o]) - eq_m);
       if constexpr (kForced) {
         const double cf = dot_c<q>(force.fx, force.fy, force.fz);
-        dp -= src_p * kW[q] * (9.0 * cu * cf - uf);
+        dp -= src_p * kW[q] * (2.0 * q2 * cu * cf - uf);
         dm -= src_m * kW[q] * 3.0 * cf;
       }
       f[q] -= dp + dm;

@@ -8,9 +8,12 @@
 // (trt.hpp):
 //   S_q^+ = w_q [ (c_q.u)(c_q.F)/c_s^4 - u.F/c_s^2 ],   S_q^- = w_q (c_q.F)/c_s^2.
 //
-// Forcing policies give the kernel the force of a cell; kActive = false compiles the terms out.
+// Forcing policies give the kernel the moments of a cell and the force its source term uses
+// (moments(f, n, force)); kActive = false compiles the terms out. forcing/porous.hpp adds the
+// porous-medium policy.
 #include "core/types.hpp"
 #include "lbm/cell.hpp"
+#include "lbm/d3q19.hpp"
 
 namespace lbdem::lbm {
 
@@ -18,6 +21,10 @@ namespace lbdem::lbm {
 struct NoForce {
   static constexpr bool kActive = false;
   CellForce at(Index) const { return {}; }
+  CellMoments moments(const double (&f)[kQ], Index, CellForce& force) const {
+    force = {};
+    return cell_moments<false>(f, force);
+  }
 };
 
 /// The same force density in every cell (gravity on the gas, a pressure-gradient surrogate).
@@ -25,6 +32,10 @@ struct UniformForce {
   static constexpr bool kActive = true;
   CellForce force;
   CellForce at(Index) const { return force; }
+  CellMoments moments(const double (&f)[kQ], Index, CellForce& out) const {
+    out = force;
+    return cell_moments<true>(f, out);
+  }
 };
 
 /// A per-cell force density (SoA over storage cells, e.g. the reaction of particle drag) plus a
@@ -37,6 +48,10 @@ struct FieldForce {
   CellForce uniform;
   CellForce at(Index n) const {
     return {uniform.fx + fx[n], uniform.fy + fy[n], uniform.fz + fz[n]};
+  }
+  CellMoments moments(const double (&f)[kQ], Index n, CellForce& out) const {
+    out = at(n);
+    return cell_moments<true>(f, out);
   }
 };
 

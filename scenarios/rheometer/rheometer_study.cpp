@@ -30,7 +30,8 @@ struct Case {
 };
 
 // The series of DESIGN §1.2 and issue 9 §2: CG 1 / 1.6 / 2 under the seed's literal rule
-// (stiffness_only), linear similarity and Hertz, the fixed-step variants and a t_c/50 check.
+// (stiffness_only), linear similarity and Hertz, the fixed-step variants, a t_c/50 check, and the
+// geometry variants that test the gap-jamming and blade-resolution explanations.
 const std::vector<Case>& cases() {
   static const std::vector<Case> c = {
       {"cg1", "cg1", "seed (l = 1)", 1, {}, "dt 3.6 us"},
@@ -49,6 +50,14 @@ const std::vector<Case>& cases() {
       {"cg1_6_hertz", "cg1_6_hertz", "hertz", 1.6, {}, "dt 3.6 us x l"},
       {"cg2_hertz", "cg2_hertz", "hertz", 2, {}, "dt 3.6 us x l"},
       {"cg1_tc50", "cg1", "seed (l = 1)", 1, {"dem.dt=1.1e-6"}, "dt t_c/50"},
+      // Explanations of the CG torque change (issue 9 §4). Gap jamming: a 2 mm blade-wall gap is
+      // 0.93 parcel diameters at l = 2, as the 1 mm gap is at l = 1; its CG 1 reference has the
+      // same geometry. Parcels across the blade: a 20 mm blade has 9.3 parcels across its height at
+      // l = 2, as the 10 mm blade has at l = 1 (blade top at 30 mm, still under the 39 mm bed).
+      {"cg1_gap2", "cg1", "seed (l = 1)", 1, {"rheometer.blade_span=0.046"}, "gap 2 mm"},
+      {"cg2_gap2", "cg2", "stiffness_only", 2, {"rheometer.blade_span=0.046"}, "gap 2 mm"},
+      {"cg1_tall", "cg1", "seed (l = 1)", 1, {"rheometer.blade_height=0.02"}, "blade 20 mm"},
+      {"cg2_tall", "cg2", "stiffness_only", 2, {"rheometer.blade_height=0.02"}, "blade 20 mm"},
   };
   return c;
 }

@@ -1,0 +1,62 @@
+#include "lbm/boundary/open_boundary.hpp"
+
+#include "core/deterministic_sum.hpp"
+#include "lbm/d3q19.hpp"
+
+#include <Eigen/Geometry>
+#include <unordered_map>
+
+namespace lbdem::lbm {
+
+PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density) {
+  const Grid& g = flags.grid();
+  PressureOutlet o;
+  o.density = density;
+  std::unordered_map<Index, std::uint32_t> position;
+  auto cell_of = [&](Index n) {
+    const auto [it, added] = position.try_emplace(n, std::uint32_t(o.cells.size()));
+    if (added) o.cells.push_back(g.coordinates(n));
+    return it->second;
+  };
+  o.near_cell.reserve(links.size());
+  o.inward_cell.reserve(links.size());
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const std::uint32_t near = cell_of(links.fluid[k]);
+    const auto [x, y, z] = g.coordinates(links.fluid[k]);
+    const Index inward = g.neighbor(x, y, z, opposite(links.dir[k]));  // x - c_q, wrapped
+    o.near_cell.push_back(near);
+    o.inward_cell.push_back(flags.fluid(inward) ? cell_of(inward) : near);
+  }
+  o.velocity.assign(o.cells.size(), Vec3::Zero());
+  return o;
+}
+
+WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+                                const PressureOutlet& outlet, const Vec3& origin) {
+  const bool swapped = now == AaState::swapped;
+  const double rho = outlet.density;
+  // The summand applies its link as a side effect: deterministic_sum calls it once per k. Slots
+  // as in apply_bounce_back (bounce_back.hpp).
+  return deterministic_sum(
+      links.size(),
+      [&](std::size_t k) -> WallLoad {
+        const int q = links.dir[k], o = opposite(q);
+        double& from = swapped ? pdf.at(o, links.fluid[k]) : pdf.at(q, links.solid[k]);
+        double& to = swapped ? pdf.at(q, links.solid[k]) : pdf.at(o, links.fluid[k]);
+        const Vec3& u = outlet.velocity[outlet.near_cell[k]];
+        const Vec3& u_in = outlet.velocity[outlet.inward_cell[k]];
+        const Vec3 uw = u + 0.5 * (u - u_in);  // exactly u(x) when there is no inward cell
+        const double cu = kCx[q] * uw.x() + kCy[q] * uw.y() + kCz[q] * uw.z();
+        // 1/(2 c_s^4) = 4.5 and 1/(2 c_s^2) = 1.5 for c_s^2 = 1/3.
+        const double even = 2.0 * kW[q] * rho * (1.0 + 4.5 * cu * cu - 1.5 * uw.squaredNorm());
+        const double post = from;  // f_q*(x, t)
+        const double back = even - post;
+        to = back;
+        const double m = post + back;
+        const Vec3 f(kCx[q] * m, kCy[q] * m, kCz[q] * m);
+        return {f, (links.point[k] - origin).cross(f), back - post};
+      },
+      WallLoad{});
+}
+
+}  // namespace lbdem::lbm
