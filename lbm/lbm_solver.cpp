@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "lbm/equilibrium.hpp"
+#include "lbm/forcing/porous.hpp"
 #include "lbm/moments.hpp"
 #include "lbm/stream_collide.hpp"
 
@@ -128,7 +129,9 @@ void LbmSolver::initialize(
         double rho = 1.0;
         Vec3 u = Vec3::Zero();
         init(x, y, z, rho, u);
-        for (int q = 0; q < kQ; ++q) pdf_.at(q, n) = equilibrium(q, rho, u.x(), u.y(), u.z());
+        const double inv_eps = has_porosity() ? 1.0 / eps_[std::size_t(n)] : 1.0;
+        for (int q = 0; q < kQ; ++q)
+          pdf_.at(q, n) = equilibrium(q, rho, u.x(), u.y(), u.z(), inv_eps);
       }
   state_ = AaState::natural;
 }
@@ -144,11 +147,54 @@ void LbmSolver::set_cell_force(int x, int y, int z, const Vec3& f) {
   for (int a = 0; a < 3; ++a) force_[std::size_t(a)][n] = f[a];
 }
 
+void LbmSolver::enable_porosity() {
+  if (has_porosity()) return;
+  eps_.assign(std::size_t(grid().storage_cells()), 1.0);
+  alpha_.assign(std::size_t(grid().storage_cells()), 0.0);
+}
+
+void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha) {
+  if (!has_porosity()) throw std::logic_error("set_cell_porosity before enable_porosity");
+  if (!(eps > 0 && eps <= 1))
+    throw std::invalid_argument("fluid fraction must lie in (0, 1], got " + std::to_string(eps));
+  if (!(alpha >= 0 && std::isfinite(alpha)))
+    throw std::invalid_argument("Darcy rate must be >= 0, got " + std::to_string(alpha));
+  const auto n = std::size_t(grid().index(x, y, z));
+  eps_[n] = eps;
+  alpha_[n] = alpha;
+}
+
+void LbmSolver::set_forchheimer(double beta) {
+  if (!(beta >= 0 && std::isfinite(beta)))
+    throw std::invalid_argument("Forchheimer coefficient must be >= 0, got " +
+                                std::to_string(beta));
+  beta_ = beta;
+}
+
+void LbmSolver::porosity(std::vector<double>& eps) const {
+  const Grid& g = grid();
+  eps.assign(std::size_t(g.cells()), 0.0);
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const Index n = g.index(x, y, z);
+        if (flags_.fluid(n))
+          eps[std::size_t(g.compact_index(x, y, z))] = has_porosity() ? eps_[std::size_t(n)] : 1.0;
+      }
+}
+
 template <class Fn>
 void LbmSolver::with_forcing(Fn&& fn) const {
   const Vec3& b = settings_.body_force;
   const CellForce uniform{b.x(), b.y(), b.z()};
-  if (has_force_field())
+  if (has_porosity()) {
+    if (has_force_field())
+      fn(PorousMedium<FieldForce>{
+          FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform}, eps_.data(),
+          alpha_.data(), beta_});
+    else
+      fn(PorousMedium<UniformForce>{UniformForce{uniform}, eps_.data(), alpha_.data(), beta_});
+  } else if (has_force_field())
     fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
   else if (!b.isZero())
     fn(UniformForce{uniform});

@@ -98,6 +98,17 @@ class LbmSolver {
   bool has_force_field() const { return !force_[0].empty(); }
   void set_cell_force(int x, int y, int z, const Vec3& f);
 
+  /// The porous-medium form (forcing/porous.hpp, Guo & Zhao 2002): per-cell fluid fraction eps and
+  /// Darcy rate alpha = eps nu / K [1/step], 1 and 0 when first enabled; a uniform Forchheimer
+  /// coefficient beta = eps F_eps / sqrt(K). Call initialize() after setting eps if the gas
+  /// starts in motion, so that its equilibrium carries the 1/eps terms.
+  void enable_porosity();
+  bool has_porosity() const { return !eps_.empty(); }
+  void set_cell_porosity(int x, int y, int z, double eps, double alpha = 0);
+  void set_forchheimer(double beta);
+  /// Fluid fraction over interior cells in compact order (1 without porosity, 0 in solids).
+  void porosity(std::vector<double>& eps) const;
+
   // --- Results ----------------------------------------------------------------------------------
   /// Momentum-exchange force of the fluid on a body during the last step [lattice units].
   const Vec3& wall_force(int body) const { return bodies_[std::size_t(body - 1)].load.force; }
@@ -137,6 +148,8 @@ class LbmSolver {
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};
   std::array<std::vector<double>, 3> force_;
+  std::vector<double> eps_, alpha_;  // per storage cell, when porosity is enabled
+  double beta_ = 0;
   AaState state_ = AaState::natural;
   long steps_ = 0;
   bool links_dirty_ = true;
