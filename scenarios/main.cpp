@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "core/error.hpp"
+#include "scenarios/common/dem_driver.hpp"
 #include "scenarios/run_command.hpp"
 
 int main(int argc, char** argv) {
@@ -47,6 +48,9 @@ int main(int argc, char** argv) {
   } catch (const lbdem::InputError& e) {
     std::cerr << "lbdem: error: " << e.what() << "\n";
     return lbdem::kInputErrorExit;
+  } catch (const lbdem::scenarios::Diverged& e) {
+    std::cerr << "lbdem: error: " << e.what() << "\n";
+    return lbdem::scenarios::kDivergedExit;
   } catch (const std::exception& e) {
     std::cerr << "lbdem: failed: " << e.what() << "\n";
     return 1;

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/h5.hpp"
+#include "scenarios/common/fluid_output.hpp"
 
 namespace lbdem::scenarios {
 
@@ -34,7 +35,17 @@ BoxScenario::BoxScenario(const Config& cfg) {
       throw InputError(box.path("hi"), vec_text(s.domain.hi),
                        "not above box.lo along " + std::string(kAxes[a]),
                        "give hi > lo on every axis");
-  auto mats = read_materials(cfg);
+  // A [fluid] box without [[materials]] may hold no particles: its walls get a placeholder
+  // material (never in contact with anything).
+  const bool has_fluid = cfg.has("fluid");
+  std::vector<dem::Material> mats;
+  if (has_fluid && !cfg.has("materials") && !cfg.has("fill") && !cfg.has("particle") &&
+      !cfg.section("inflow").get_bool("enabled", false)) {
+    mats.emplace_back();
+    mats.back().name = "none";
+  } else {
+    mats = read_materials(cfg);
+  }
   const std::string wall_mat_name = box.get_string("wall_material", mats.front().name);
   const int wall_mat = material_index(mats, wall_mat_name, box.path("wall_material"));
   std::vector<dem::Wall> walls;
@@ -65,6 +76,9 @@ BoxScenario::BoxScenario(const Config& cfg) {
   }
   for (const Config& w : cfg.table_array("walls")) walls.push_back(read_wall(w, mats));
   s.gravity = cfg.section("physics").get_vec3("gravity", Vec3(0, 0, -9.81));
+  if (has_fluid)
+    fluid_ =
+        read_fluid(cfg.section("fluid"), s.domain.lo, s.domain.hi, s.domain.periodic, s.gravity);
   s.contact = read_contact(cfg.section("contact"));
   cg_ = read_coarse_grain(cfg.section("coarse_grain"), s.contact.normal);
   const double l = cg_.l();
@@ -150,21 +164,36 @@ BoxScenario::BoxScenario(const Config& cfg) {
     outlet_.lo = outlet.require_vec3("lo");
     outlet_.hi = outlet.require_vec3("hi");
   }
-  if (init.empty() && !inflow_.on)
+  gas_only_ = has_fluid && init.empty() && !inflow_.on;
+  if (init.empty() && !inflow_.on && !gas_only_)
     throw InputError("fill", "", "no particles",
                      "add a [[fill]] or [[particle]] table or an [inflow]");
 
-  const Config dcfg = cfg.section("dem");
-  std::vector<int> wall_mats;
-  for (const auto& w : walls) wall_mats.push_back(w.material);
-  // Contact parameters of parcels (the config gives the originals); r_min is a parcel radius.
-  const double dt_factor = cg_.dt_factor(mats.front(), r_min / l);
-  cg_.apply(mats, r_min / l);
-  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor);
-  s.dt = step_.dt;
-  s.skin = dcfg.get("skin", 0.2 * r_min,
-                    Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
-  s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
+  if (gas_only_) {
+    // No particles: the DEM step has no contact time to resolve, so it is the gas step.
+    if (cfg.has("dem"))
+      throw InputError("dem", "", "a box without particles has no DEM step to set",
+                       "remove the [dem] table, or add particles");
+    sub_ = conform_dem_step(fluid_.dt, fluid_.dt);
+    s.dt = sub_.dem_dt;
+    s.skin = fluid_.dx;  // unused: nothing to track
+  } else {
+    const Config dcfg = cfg.section("dem");
+    std::vector<int> wall_mats;
+    for (const auto& w : walls) wall_mats.push_back(w.material);
+    // Contact parameters of parcels (the config gives the originals); r_min is a parcel radius.
+    const double dt_factor = cg_.dt_factor(mats.front(), r_min / l);
+    cg_.apply(mats, r_min / l);
+    step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor);
+    s.dt = step_.dt;
+    if (has_fluid) {
+      sub_ = conform_dem_step(step_.dt, fluid_.dt);
+      s.dt = sub_.dem_dt;
+    }
+    s.skin = dcfg.get("skin", 0.2 * r_min,
+                      Range::positive("give the neighbour skin in m, e.g. 0.2 r_min"));
+    s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
+  }
   out_ = OutputSettings::from(run, cfg.section("output"));
 
   solver_ = std::make_unique<dem::DemSolver>(s, mats);
@@ -177,12 +206,34 @@ BoxScenario::BoxScenario(const Config& cfg) {
     solver_->add_particle(q.x, q.v, q.r, q.mat);
     solver_->particles().omega.back() = q.w;
   }
+  if (has_fluid) {
+    const lbm::LbmSettings lattice = fluid_.lattice();
+    gas_ = std::make_unique<lbm::LbmSolver>(lattice);
+    const Vec3 u0 = fluid_.initial_velocity * fluid_.units().velocity_to_lattice(1.0);
+    // The velocity moment is (sum c f + F/2) / rho (Guo's half-force shift, lbm/cell.hpp): start
+    // the populations at u0 - F / (2 rho), so the gas moves at initial_velocity (at rest under
+    // gravity, in hydrostatic balance) from the first step.
+    gas_->initialize([&](int x, int y, int z, double& rho, Vec3& v) {
+      rho = fluid_.rest_density(x, y, z);
+      v = u0 - lattice.body_force / (2 * rho);
+    });
+  }
 }
 
 void BoxScenario::banner(Log& log) const {
-  for (const auto& line : cg_.banner) log.line(line);
-  dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
-             step_.scales.rayleigh_time, step_.scales.where);
+  if (gas_only_) {
+    log.line("DEM: no particles (a pure gas run); the DEM keeps the clock at the gas step");
+  } else {
+    for (const auto& line : cg_.banner) log.line(line);
+    dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
+               step_.scales.rayleigh_time, step_.scales.where);
+  }
+  if (gas_) fluid_banner(log, fluid_, sub_);
+}
+
+void BoxScenario::advance_gas(const dem::DemSolver& s) {
+  if (!gas_) return;
+  for (int k = sub_.gas_steps_before(s.steps()); k > 0; --k) gas_->step();
 }
 
 void BoxScenario::before_step(dem::DemSolver& s) {
@@ -221,9 +272,16 @@ void BoxScenario::before_step(dem::DemSolver& s) {
 
 int BoxScenario::run(const RunContext& ctx) {
   DriverHooks hooks;
-  hooks.before_step = [this](dem::DemSolver& s) { before_step(s); };
+  hooks.before_step = [this](dem::DemSolver& s) {
+    before_step(s);
+    advance_gas(s);
+  };
   hooks.extra_columns = wall_columns_;
   hooks.extra_columns.push_back("mass_inserted_kg");
+  if (gas_) {
+    const auto cols = fluid_columns(fluid_);
+    hooks.extra_columns.insert(hooks.extra_columns.end(), cols.begin(), cols.end());
+  }
   hooks.extra_values = [this](const dem::DemSolver& s) {
     std::vector<double> v;
     for (const auto& w : s.walls()) {
@@ -235,6 +293,10 @@ int BoxScenario::run(const RunContext& ctx) {
       v.push_back(w.torque.dot(axis));
     }
     v.push_back(inflow_.inserted);
+    if (gas_) {
+      const auto g = fluid_values(*gas_, fluid_);
+      v.insert(v.end(), g.begin(), g.end());
+    }
     return v;
   };
   hooks.save = [this](H5Out& f) {
@@ -242,12 +304,32 @@ int BoxScenario::run(const RunContext& ctx) {
     os << rng_;
     f.attr("rng_state", os.str());
     f.attr("inflow_inserted_kg", inflow_.inserted);
+    if (gas_) save_fluid(f, *gas_);
   };
   hooks.load = [this](const H5In& f) {
     std::istringstream is(f.attr_string("rng_state"));
     is >> rng_;
     inflow_.inserted = f.attr_double("inflow_inserted_kg");
+    if (gas_) {
+      load_fluid(f, *gas_);
+      // The gas leads by design (SubCycle); any other count means a different time step.
+      const std::int64_t n = solver_->steps(), m = sub_.dem_per_gas;
+      const std::int64_t expected = m > 1 ? (n + m - 1) / m : n * sub_.gas_per_dem;
+      if (gas_->steps() != expected)
+        throw std::runtime_error("checkpoint: " + std::to_string(gas_->steps()) +
+                                 " gas steps at DEM step " + std::to_string(n) + ", expected " +
+                                 std::to_string(expected));
+    }
   };
+  if (gas_) {
+    hooks.snapshot = [this](const std::string& dir, const std::vector<double>& times) {
+      write_fluid_snapshot(dir, *gas_, fluid_, times);
+    };
+    hooks.health = [this](const dem::DemSolver& s) {
+      return check_fluid_health(*gas_, fluid_, s.time(), s.steps());
+    };
+    hooks.cycle = sub_.cycle();
+  }
   DemDriver driver(*solver_, out_, hooks);
   return driver.run(ctx);
 }

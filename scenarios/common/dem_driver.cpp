@@ -40,13 +40,37 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
 DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks)
     : solver_(solver), out_(out), hooks_(std::move(hooks)) {
   const double dt = solver_.settings().dt;
+  const std::int64_t cycle = std::max<std::int64_t>(1, hooks_.cycle);
+  const auto whole_cycles = [&](std::int64_t n) { return (n + cycle - 1) / cycle * cycle; };
   const auto steps = [&](double interval) {
-    return std::max<std::int64_t>(1, std::llround(interval / dt));
+    return whole_cycles(std::max<std::int64_t>(1, std::llround(interval / dt)));
   };
   every_row_ = steps(out_.interval);
   every_snapshot_ = steps(out_.snapshot_interval);
   every_checkpoint_ = out_.checkpoint_interval > 0 ? steps(out_.checkpoint_interval) : 0;
-  last_step_ = std::llround(out_.end_time / dt);
+  last_step_ = whole_cycles(std::llround(out_.end_time / dt));
+}
+
+namespace {
+struct SignalHandlers {
+  void (*int_)(int) = SIG_DFL;
+  void (*term_)(int) = SIG_DFL;
+};
+SignalHandlers g_old_handlers;
+void restore_signals() {
+  std::signal(SIGINT, g_old_handlers.int_);
+  std::signal(SIGTERM, g_old_handlers.term_);
+}
+}  // namespace
+
+void DemDriver::check_health(Progress& progress) const {
+  if (!hooks_.health) return;
+  if (auto msg = hooks_.health(solver_)) {
+    progress.finish();
+    restore_signals();
+    if (log_) log_->line("error: " + *msg);
+    throw Diverged(*msg);
+  }
 }
 
 namespace {
@@ -135,6 +159,7 @@ void DemDriver::write_snapshot(const std::string& dir) {
     f.commit();
   }
   snapshot_times_.push_back(solver_.time());
+  if (hooks_.snapshot) hooks_.snapshot(dir, snapshot_times_);
   // particles.h5 links every snapshot (HDF5 external links), rewritten atomically each time.
   H5Out master(dir + "/particles.h5");
   master.write("/time_s", snapshot_times_);
@@ -192,6 +217,7 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
 }
 
 int DemDriver::run(const RunContext& ctx) {
+  log_ = ctx.log;
   std::vector<std::string> cols = kColumns;
   cols.insert(cols.end(), hooks_.extra_columns.begin(), hooks_.extra_columns.end());
   double stored0 = 0;
@@ -218,16 +244,16 @@ int DemDriver::run(const RunContext& ctx) {
   Progress progress(out_.end_time, "particle-steps");
   double work = 0;
   g_stop_signal = 0;
-  auto old_int = std::signal(SIGINT, on_stop_signal);
-  auto old_term = std::signal(SIGTERM, on_stop_signal);
+  g_old_handlers.int_ = std::signal(SIGINT, on_stop_signal);
+  g_old_handlers.term_ = std::signal(SIGTERM, on_stop_signal);
   while (solver_.steps() < last_step_) {
     if (g_stop_signal) {
       extra_row_ = extra_snapshot_ = false;
+      check_health(progress);
       write_checkpoint(ctx.dir, stored0);
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
       progress.finish();
-      std::signal(SIGINT, old_int);
-      std::signal(SIGTERM, old_term);
+      restore_signals();
       throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) +
                         " at t = " + to_text(solver_.time()) + " s; checkpoint written");
     }
@@ -240,16 +266,18 @@ int DemDriver::run(const RunContext& ctx) {
     // a resumed series equals an uninterrupted one.
     extra_row_ = last && s % every_row_ != 0;
     extra_snapshot_ = last && s % every_snapshot_ != 0;
-    if (s % every_row_ == 0 || last) write_row(stored0, !extra_row_);
-    if (s % every_snapshot_ == 0 || last) write_snapshot(ctx.dir);
-    if ((every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last) {
+    const bool row = s % every_row_ == 0 || last, snapshot = s % every_snapshot_ == 0 || last;
+    const bool checkpoint = (every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last;
+    if (row || snapshot || checkpoint) check_health(progress);
+    if (row) write_row(stored0, !extra_row_);
+    if (snapshot) write_snapshot(ctx.dir);
+    if (checkpoint) {
       write_checkpoint(ctx.dir, stored0);
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
     }
     progress.update(solver_.time(), work);
   }
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
+  restore_signals();
   progress.update(solver_.time(), work, true);
   progress.finish();
   const auto e = solver_.energy();

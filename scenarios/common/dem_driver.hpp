@@ -1,11 +1,13 @@
 #pragma once
-// The time loop shared by DEM-only scenarios: output of timeseries.csv, particle snapshots
+// The time loop shared by the DEM scenarios: output of timeseries.csv, particle snapshots
 // (particles.h5 + .xdmf), collisions.h5, periodic checkpoints and --resume, progress and the
 // start-up banner. Output and checkpoint instants are step counts, so a resumed run writes at the
-// same steps as one that never stopped.
+// same steps as one that never stopped. Another phase (the box's gas) joins through the hooks:
+// it steps in before_step, writes in snapshot/extra_values/save, and is watched by health.
 #include <functional>
-#include <stdexcept>
+#include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,12 +16,23 @@
 #include "dem/dem_solver.hpp"
 #include "scenarios/common/run_context.hpp"
 
+namespace lbdem {
+class Progress;
+}
+
 namespace lbdem::scenarios {
 
 /// Thrown when SIGINT/SIGTERM stopped the loop after writing a checkpoint.
 struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// Thrown when the health hook found a diverged state; nothing of that state was written (the
+/// last output and checkpoint stay). lbdem-cli exits with kDivergedExit.
+struct Diverged : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+inline constexpr int kDivergedExit = 3;
 
 struct OutputSettings {
   double end_time = 1;             // [s]
@@ -36,6 +49,16 @@ struct DriverHooks {
   std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
   std::function<void(H5Out&)> save;  // scenario state into the checkpoint
   std::function<void(const H5In&)> load;
+  /// Called after each particle snapshot with all snapshot times so far (the last one is now):
+  /// other phases write their own snapshots at the same instants (fluid.h5).
+  std::function<void(const std::string& dir, const std::vector<double>& times)> snapshot;
+  /// Watchdog, called before anything is written at a step (row, snapshot, checkpoint, signal
+  /// stop): a message stops the run with Diverged, keeping the last good output.
+  std::function<std::optional<std::string>(const dem::DemSolver&)> health;
+  /// DEM steps per coupling cycle (> 1 when another solver steps once per `cycle` DEM steps):
+  /// output, checkpoint and end instants are rounded up to whole cycles, where every solver
+  /// stands at the same time.
+  std::int64_t cycle = 1;
 };
 
 class DemDriver {
@@ -48,6 +71,8 @@ class DemDriver {
   void write_row(double stored0, bool regular = true);
   void write_snapshot(const std::string& dir);
   void write_checkpoint(const std::string& dir, double stored0) const;
+  /// Throws Diverged (after restoring the signal handlers) if the health hook objects.
+  void check_health(Progress& progress) const;
 
   dem::DemSolver& solver_;
   OutputSettings out_;
@@ -58,6 +83,7 @@ class DemDriver {
   double prev_t_ = 0;
   std::int64_t prev_pp_ = 0, prev_pw_ = 0;
   TimeSeries ts_;
+  Log* log_ = nullptr;
 };
 
 /// Derived DEM numbers for the start-up banner (DESIGN §3).

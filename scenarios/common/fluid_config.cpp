@@ -1,0 +1,303 @@
+#include "scenarios/common/fluid_config.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "lbm/d3q19.hpp"
+
+namespace lbdem::scenarios {
+
+namespace {
+
+const char* kAxes[3] = {"x", "y", "z"};
+const std::vector<std::string> kFaceKinds = {"wall", "periodic", "moving_wall", "inlet", "outlet"};
+
+std::string vec_text(const Vec3& v) {
+  return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
+}
+
+// One face: a plain string, or an inline table with a kind.
+FluidFace read_face(const Config& faces, int f, bool periodic_default) {
+  const std::string name(lbm::BoxFaces::kNames[std::size_t(f)]);
+  const int axis = f / 2;
+  const double inward = f % 2 ? -1.0 : 1.0;  // sign of the inward normal along `axis`
+  FluidFace out;
+  const Config table = faces.section(name);
+  if (!table.has("kind")) {
+    out.kind = faces.get_choice(name, periodic_default ? "periodic" : "wall", kFaceKinds);
+    if (out.kind != "wall" && out.kind != "periodic")
+      throw InputError(faces.path(name), "\"" + out.kind + "\"", "this kind needs its parameters",
+                       out.kind == "outlet"
+                           ? "write {kind = \"outlet\", pressure = 0.0} (gauge pressure in Pa)"
+                           : "write {kind = \"" + out.kind + "\", velocity = [x, y, z]} in m/s");
+    return out;
+  }
+  out.kind = table.get_choice("kind", "wall", kFaceKinds);
+  if (out.kind == "moving_wall") {
+    out.velocity = table.require_vec3("velocity");
+    // Ladd's term moves a wall in its own plane; a normal component would push mass through it.
+    if (out.velocity[axis] != 0)
+      throw InputError(table.path("velocity"), vec_text(out.velocity),
+                       "a moving wall slides in its plane; the " + std::string(kAxes[axis]) +
+                           " component must be 0",
+                       "set it to 0, or use {kind = \"inlet\", velocity = [..]} for inflow");
+  } else if (out.kind == "inlet") {
+    out.velocity = table.require_vec3("velocity");
+    if (!(out.velocity[axis] * inward > 0))
+      throw InputError(table.path("velocity"), vec_text(out.velocity),
+                       "an inlet's velocity must point into the box (" +
+                           std::string(inward > 0 ? "+" : "-") + kAxes[axis] + ")",
+                       "flip the sign of its " + std::string(kAxes[axis]) + " component");
+  } else if (out.kind == "outlet") {
+    out.pressure = table.get("pressure", 0.0);
+  }
+  return out;
+}
+
+// A box edge as a whole number of cells within 1e-9 relative (a wall off by a fraction of a cell
+// would move the half-way bounce-back wall away from the DEM wall).
+int cells_along(const Config& fluid, int axis, double length, double dx) {
+  const double r = length / dx;
+  const double n = std::round(r);
+  if (n < 1 || std::abs(r - n) > 1e-9 * r)
+    throw InputError(fluid.path("dx"), to_text(dx),
+                     "the box edge along " + std::string(kAxes[axis]) + " (" + to_text(length) +
+                         " m) is " + to_text(r) + " cells, not a whole number",
+                     "choose dx = L/n, e.g. " + to_text(length / std::max(1.0, std::floor(r))) +
+                         " or " + to_text(length / std::ceil(r)) + " m");
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
+                       const std::array<bool, 3>& box_periodic, const Vec3& gravity) {
+  FluidConfig c;
+  c.lo = lo;
+  c.density = fluid.require("density", Range::positive("give the gas density in kg/m^3"));
+  c.viscosity = fluid.require("viscosity",
+                              Range::positive("give the dynamic viscosity in Pa s (air 1.8e-5)"));
+  c.dx = fluid.require("dx", Range::positive("give the cell size in m"));
+  for (int a = 0; a < 3; ++a) c.cells[std::size_t(a)] = cells_along(fluid, a, hi[a] - lo[a], c.dx);
+
+  const Config faces = fluid.section("faces");
+  std::array<bool, 3> periodic{};
+  for (int f = 0; f < 6; ++f) {
+    const int axis = f / 2;
+    c.faces[std::size_t(f)] = read_face(faces, f, box_periodic[std::size_t(axis)]);
+    const bool p = c.faces[std::size_t(f)].kind == "periodic";
+    const std::string name(lbm::BoxFaces::kNames[std::size_t(f)]);
+    // The gas and the particles live in one box: a periodic gas face with a walled DEM face (or
+    // the reverse) would let one phase through where the other stops.
+    if (p != box_periodic[std::size_t(axis)])
+      throw InputError(
+          faces.path(name), "\"" + c.faces[std::size_t(f)].kind + "\"",
+          std::string("the DEM box face box.") + name + " is " +
+              (box_periodic[std::size_t(axis)] ? "" : "not ") + "periodic",
+          "make fluid.faces." + name + " and box." + name + " both periodic, or neither");
+    periodic[std::size_t(axis)] = p;
+  }
+
+  c.max_speed = fluid.require(
+      "max_speed", Range::positive("give the largest gas speed expected, in m/s (Mach check)"));
+  c.initial_velocity = fluid.get_vec3("initial_velocity", Vec3::Zero());
+  const auto check_speed = [&](const std::string& key, const Vec3& u) {
+    if (u.norm() > c.max_speed)
+      throw InputError(key, vec_text(u),
+                       "faster (" + to_text(u.norm()) +
+                           " m/s) than fluid.max_speed = " + to_text(c.max_speed) + " m/s",
+                       "raise fluid.max_speed to at least " + to_text(u.norm()));
+  };
+  check_speed(fluid.path("initial_velocity"), c.initial_velocity);
+  for (int f = 0; f < 6; ++f)
+    check_speed(faces.path(std::string(lbm::BoxFaces::kNames[std::size_t(f)])) + ".velocity",
+                c.faces[std::size_t(f)].velocity);
+
+  c.body_force = fluid.get_vec3("body_force", Vec3::Zero());
+  if (fluid.get_bool("gravity", false)) c.body_force += c.density * gravity;
+  // Along a wall-bounded axis a force density F is held by a static pressure gradient, so the
+  // pressure varies by |F_a| L_a across the box; along a periodic axis it drives flow instead.
+  // An outlet held at a gauge pressure p differs from the reference by |p| as well.
+  double dp_default = 0;
+  for (int a = 0; a < 3; ++a)
+    if (!periodic[std::size_t(a)]) dp_default += std::abs(c.body_force[a]) * (hi[a] - lo[a]);
+  for (const FluidFace& f : c.faces) dp_default = std::max(dp_default, std::abs(f.pressure));
+  c.pressure_difference = fluid.get(
+      "pressure_difference", dp_default,
+      Range::non_negative("give the largest static pressure difference in Pa (bed weight, ...)"));
+
+  c.collision = fluid.get_choice("collision", "trt", {"trt", "bgk", "les"});
+  double tau_margin = 1e-4;  // check_stability's default, for TRT (units.hpp)
+  double nu_turbulent_max = 0;
+  if (c.collision == "trt") {
+    c.magic = fluid.get("magic", lbm::Trt::kMagicDefault,
+                        Range::positive("give the TRT magic parameter, 3/16 = 0.1875"));
+  } else if (c.collision == "bgk") {
+    // BGK's linearly stable range of lattice speeds shrinks as tau -> 1/2 (Sterling & Chen 1996,
+    // J. Comput. Phys. 123, 196); TRT keeps its odd rate away from 2 through the magic parameter
+    // and runs far closer (DESIGN §5). BGK gets 50 times TRT's margin: tau >= 0.505.
+    tau_margin = 5e-3;
+  } else {
+    c.smagorinsky = fluid.get("smagorinsky", lbm::RegularizedLes::kSmagorinskyDefault,
+                              Range::non_negative("give the Smagorinsky constant, 0.1 - 0.17"));
+    // The largest eddy viscosity a resolved flow shows: (C_s dx)^2 |S| at a strain of one
+    // max_speed jump across one cell, |S| = max_speed / dx.
+    nu_turbulent_max = c.smagorinsky * c.smagorinsky * c.dx * c.max_speed;
+  }
+  // A parameter of another operator would be silently ignored: say so.
+  if (fluid.has("magic") && c.collision != "trt")
+    throw InputError(fluid.path("magic"), "", "only used by fluid.collision = \"trt\"",
+                     "remove it, or set fluid.collision = \"trt\"");
+  if (fluid.has("smagorinsky") && c.collision != "les")
+    throw InputError(fluid.path("smagorinsky"), "", "only used by fluid.collision = \"les\"",
+                     "remove it, or set fluid.collision = \"les\"");
+
+  // Time step: given, or from the target lattice velocity (and the pressure limit).
+  std::string key_dt = fluid.path("dt");
+  if (fluid.has("dt") && fluid.has("lattice_velocity"))
+    throw InputError(fluid.path("lattice_velocity"), "", "give either fluid.dt or it, not both",
+                     "remove fluid.dt or fluid.lattice_velocity");
+  if (fluid.has("dt")) {
+    c.dt = fluid.get("dt", 0.0, Range::positive("give the gas time step in s"));
+    c.dt_from = "fluid.dt";
+  } else {
+    const double ul =
+        fluid.get("lattice_velocity", 0.1,
+                  {0, 0.3, true, false, "give a lattice velocity in (0, 0.3], e.g. 0.1"});
+    c.dt = lbm::dt_for_lattice_velocity(c.max_speed, c.dx, ul);
+    c.dt_from = "lattice velocity " + to_text(ul) + " at max_speed";
+    // DESIGN §5: a static Dp of more than 1 % of rho c_s^2 limits dt below what Mach allows.
+    if (c.pressure_difference > 0) {
+      const double dt_p = lbm::max_dt_for_pressure(c.pressure_difference, c.density, c.dx, 0.01);
+      if (dt_p < c.dt) c.dt = dt_p, c.dt_from = "Dp / (rho c_s^2) = 1 %";
+    }
+    key_dt = "fluid.dt (from fluid.lattice_velocity = " + to_text(ul) + ")";
+  }
+
+  lbm::StabilityInput in;
+  in.units = c.units();
+  in.nu_si = c.nu();
+  in.u_max_si = c.max_speed;
+  in.dp_static_si = c.pressure_difference;
+  in.nu_turbulent_max_si = nu_turbulent_max;
+  in.tau_margin = tau_margin;
+  in.key_dt = key_dt;
+  in.key_dx = fluid.path("dx");
+  c.report = lbm::check_stability(in);
+
+  // Reynolds number on the narrowest wall-to-wall distance (the channel width), or the longest
+  // edge of a fully periodic box.
+  double l_wall = 0, l_max = 0;
+  for (int a = 0; a < 3; ++a) {
+    const double l = hi[a] - lo[a];
+    l_max = std::max(l_max, l);
+    if (!periodic[std::size_t(a)]) l_wall = l_wall > 0 ? std::min(l_wall, l) : l;
+  }
+  c.reynolds_length = l_wall > 0 ? l_wall : l_max;
+  c.reynolds = c.max_speed * c.reynolds_length / c.nu();
+  return c;
+}
+
+lbm::LbmSettings FluidConfig::lattice() const {
+  const lbm::LatticeUnits u = units();
+  lbm::LbmSettings s;
+  s.nx = cells[0], s.ny = cells[1], s.nz = cells[2];
+  const auto to_lattice = [&](const Vec3& v) {
+    return Vec3(u.velocity_to_lattice(v[0]), u.velocity_to_lattice(v[1]),
+                u.velocity_to_lattice(v[2]));
+  };
+  for (int f = 0; f < 6; ++f) {
+    const FluidFace& in = faces[std::size_t(f)];
+    lbm::FaceBoundary& out = s.faces[f];
+    if (in.kind == "periodic") {
+      out.kind = lbm::FaceKind::periodic;
+    } else if (in.kind == "inlet") {
+      out.kind = lbm::FaceKind::inlet;
+      out.wall_velocity = to_lattice(in.velocity);
+    } else if (in.kind == "outlet") {
+      // p - p_ref = (rho - 1) c_s^2 in lattice units.
+      out.kind = lbm::FaceKind::outlet;
+      out.density = 1.0 + u.density_change(in.pressure);
+    } else {
+      out.kind = lbm::FaceKind::wall;
+      out.wall_velocity = to_lattice(in.velocity);
+    }
+  }
+  const double tau = report.tau;
+  if (collision == "trt")
+    s.collision = lbm::Trt::from_tau(tau, magic);
+  else if (collision == "bgk")
+    s.collision = lbm::Bgk::from_tau(tau);
+  else
+    s.collision = lbm::RegularizedLes::from_tau(tau, smagorinsky);
+  for (int a = 0; a < 3; ++a) s.body_force[a] = u.force_density_to_lattice(body_force[a]);
+  return s;
+}
+
+double FluidConfig::rest_density(int x, int y, int z) const {
+  const lbm::LatticeUnits u = units();
+  const int at[3] = {x, y, z};
+  double rho = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    if (faces[std::size_t(2 * a)].kind == "periodic") continue;
+    const double offset = at[a] + 0.5 - 0.5 * cells[std::size_t(a)];  // from the centre [cells]
+    rho += u.force_density_to_lattice(body_force[a]) * offset / lbm::kCs2;
+  }
+  return rho;
+}
+
+Vec3 FluidConfig::cell_centre(int x, int y, int z) const {
+  return lo + dx * Vec3(x + 0.5, y + 0.5, z + 0.5);
+}
+
+SubCycle conform_dem_step(double dem_dt, double gas_dt) {
+  SubCycle s;
+  s.dem_dt_asked = dem_dt;
+  const double r = dem_dt / gas_dt;
+  // The 1e-9 keeps a ratio meant to be whole (3 dt_gas given as 2.9999999999 dt_gas) whole.
+  if (r >= 1 - 1e-9) {
+    s.gas_per_dem = static_cast<int>(std::floor(r * (1 + 1e-9)));
+    s.dem_dt = s.gas_per_dem * gas_dt;
+  } else {
+    s.dem_per_gas = static_cast<int>(std::ceil(1 / r * (1 - 1e-9)));
+    s.dem_dt = gas_dt / s.dem_per_gas;
+  }
+  return s;
+}
+
+void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
+  const auto& r = f.report;
+  const lbm::LatticeUnits u = f.units();
+  const double n = double(f.cells[0]) * f.cells[1] * f.cells[2];
+  log.line("gas derived numbers:");
+  log.derived("cells per axis", f.cells[0], "",
+              "x " + std::to_string(f.cells[1]) + " x " + std::to_string(f.cells[2]) + " = " +
+                  to_text(n) + " cells, " + to_text(n * 152e-6) + " MB of populations");
+  log.derived("cell size dx", f.dx, "m");
+  log.derived("gas time step dt", f.dt, "s", "(" + f.dt_from + ")");
+  if (sub.dem_per_gas > 1)
+    log.derived("DEM steps per gas step", sub.dem_per_gas, "",
+                "(DEM dt " + to_text(sub.dem_dt) + " s, asked " + to_text(sub.dem_dt_asked) + ")");
+  else
+    log.derived("gas steps per DEM step", sub.gas_per_dem, "",
+                "(DEM dt " + to_text(sub.dem_dt) + " s, asked " + to_text(sub.dem_dt_asked) + ")");
+  log.derived("kinematic viscosity nu", f.nu(), "m^2/s");
+  log.line("  collision operator                 " + f.collision +
+           (f.collision == "trt" ? " (magic " + to_text(f.magic) + ")"
+            : f.collision == "les"
+                ? " (regularized, Smagorinsky C_s " + to_text(f.smagorinsky) + ")"
+                : ""));
+  log.derived("tau (molecular)", r.tau, "", "(tau - 1/2 = " + to_text(r.tau - 0.5) + ")");
+  log.derived("tau effective range", r.tau, "", "to " + to_text(r.tau_effective_max));
+  log.derived("nu_lattice", r.nu_lattice, "");
+  log.derived("lattice Mach at max_speed", r.mach, "",
+              "(max_speed " + to_text(f.max_speed) + " m/s, c_s " + to_text(u.cs_si()) + " m/s)");
+  log.derived("Dp / (rho c_s^2)", r.density_change, "",
+              "(Dp " + to_text(f.pressure_difference) + " Pa)");
+  log.derived("Reynolds number", f.reynolds, "",
+              "(max_speed x " + to_text(f.reynolds_length) + " m / nu)");
+  log.derived("body force on the gas", f.body_force.norm(), "N/m^3");
+  for (const auto& w : r.warnings) log.line("warning: gas: " + w);
+}
+
+}  // namespace lbdem::scenarios

@@ -1,0 +1,91 @@
+#pragma once
+// The [fluid] part of a scenario config: the gas in SI (density, dynamic viscosity, cell size,
+// time step or target lattice velocity, largest expected speed and static pressure difference,
+// collision operator, body force, initial velocity, faces), checked with lbm::check_stability
+// (tau, lattice Mach, Dp / (rho c_s^2); DESIGN §5) and turned into lbm::LbmSettings. Every value
+// stays in SI here; lattice values only appear in the LbmSettings handed to the solver (STYLE §4).
+//
+// Keys (all under [fluid]):
+//   density [kg/m^3], viscosity (dynamic) [Pa s], dx [m] (each box edge a whole number of cells),
+//   dt [s] or lattice_velocity [-] (dt = lattice_velocity dx / max_speed, lowered to keep the
+//   static Dp within 1 % of rho c_s^2), max_speed [m/s], pressure_difference [Pa] (default: the
+//   hydrostatic sum_a |F_a| L_a of the force density F over the wall-bounded axes),
+//   collision = "trt" (magic, default 3/16) | "bgk" | "les" (smagorinsky, default 0.1),
+//   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
+//   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
+//   {kind = "inlet", velocity = [..]} | {kind = "outlet", pressure = p [Pa, gauge]}.
+// Memory: 19 doubles per cell (152 B) plus the ghost layer.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/config.hpp"
+#include "core/log.hpp"
+#include "lbm/lbm_solver.hpp"
+#include "lbm/units.hpp"
+
+namespace lbdem::scenarios {
+
+struct FluidFace {
+  std::string kind = "wall";     // wall | periodic | moving_wall | inlet | outlet
+  Vec3 velocity = Vec3::Zero();  // moving_wall, inlet [m/s]
+  double pressure = 0;           // outlet, gauge pressure p - p_ref [Pa]
+};
+
+struct FluidConfig {
+  double density = 0;              // reference gas density rho_ref [kg/m^3]
+  double viscosity = 0;            // dynamic [Pa s]
+  double dx = 0, dt = 0;           // [m], [s]
+  double max_speed = 0;            // [m/s]
+  double pressure_difference = 0;  // static Dp for the compressibility check [Pa]
+  std::string collision = "trt";   // trt | bgk | les
+  double magic = 0, smagorinsky = 0;
+  Vec3 body_force = Vec3::Zero();        // total force density on the gas, gravity included [N/m^3]
+  Vec3 initial_velocity = Vec3::Zero();  // [m/s]
+  std::array<FluidFace, 6> faces;        // x_lo, x_hi, y_lo, y_hi, z_lo, z_hi
+  Vec3 lo = Vec3::Zero();                // box corner [m]
+  std::array<int, 3> cells{};            // per axis
+  std::string dt_from;                   // how dt was chosen (banner)
+  double reynolds = 0, reynolds_length = 0;  // max_speed L / nu and its L [m]
+  lbm::StabilityReport report{};
+
+  double nu() const { return viscosity / density; }  // kinematic [m^2/s]
+  lbm::LatticeUnits units() const { return {dx, dt, density}; }
+  /// The lattice set-up: cells, faces, operator and body force in lattice units.
+  lbm::LbmSettings lattice() const;
+  /// Lattice density of the hydrostatic rest state at cell (x, y, z): 1 + F.(x - centre) / c_s^2
+  /// over the wall-bounded axes, so a gas under gravity starts in balance (mean 1).
+  double rest_density(int x, int y, int z) const;
+  /// SI position of a cell centre [m].
+  Vec3 cell_centre(int x, int y, int z) const;
+};
+
+/// Reads and checks [fluid] (throws InputError naming the key). `box_periodic`: the DEM box's
+/// periodic axes, which the gas must share; `gravity` [m/s^2] for fluid.gravity = true.
+FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
+                       const std::array<bool, 3>& box_periodic, const Vec3& gravity);
+
+/// How the gas and the DEM share time: an integer number of gas steps per DEM step or of DEM
+/// steps per gas step (DESIGN §2.1). The gas step is the one the config fixes (it sets tau, Mach
+/// and Dp / (rho c_s^2)); the DEM step is only ever shortened to fit (see conform_dem_step).
+struct SubCycle {
+  int gas_per_dem = 1;                  // > 1: the DEM step holds this many gas steps
+  int dem_per_gas = 1;                  // > 1: the gas step holds this many DEM steps
+  double dem_dt_asked = 0, dem_dt = 0;  // [s]
+  /// DEM steps per coupling cycle: instants where both solvers stand at the same time.
+  std::int64_t cycle() const { return dem_per_gas; }
+  /// Gas steps to take before DEM step number `dem_step` (0-based): the gas leads, so the DEM
+  /// steps of a cycle see the gas at the cycle's end (DESIGN §2.1 order: LBM, then DEM).
+  int gas_steps_before(std::int64_t dem_step) const {
+    return dem_per_gas > 1 ? (dem_step % dem_per_gas == 0 ? 1 : 0) : gas_per_dem;
+  }
+};
+/// dt_dem >= dt_gas: dt_dem = n dt_gas with n = floor(dt_dem / dt_gas); else dt_dem = dt_gas / m
+/// with m = ceil(dt_gas / dt_dem). Both only shorten the DEM step, so its t_c/20 check still holds.
+SubCycle conform_dem_step(double dem_dt, double gas_dt);
+
+/// Derived gas numbers for the start-up banner (DESIGN §3) and the stability warnings.
+void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub);
+
+}  // namespace lbdem::scenarios

@@ -1,0 +1,180 @@
+#include "scenarios/common/fluid_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/deterministic_sum.hpp"
+#include "core/error.hpp"
+#include "lbm/d3q19.hpp"
+
+namespace lbdem::scenarios {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool open_face(const FluidFace& f) {
+  return f.kind == "inlet" || f.kind == "outlet";
+}
+
+std::string snapshot_name(std::size_t k) {
+  char name[64];
+  std::snprintf(name, sizeof name, "snapshots/fluid_%06zu.h5", k);
+  return name;
+}
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::string> fluid_columns(const FluidConfig& c) {
+  std::vector<std::string> cols = {"gas_mean_speed_m_s", "gas_kinetic_energy_J", "gas_mass_kg"};
+  for (int f = 0; f < 6; ++f)
+    if (open_face(c.faces[std::size_t(f)]))
+      cols.push_back("gas_mass_flow_" + std::string(lbm::BoxFaces::kNames[std::size_t(f)]) +
+                     "_kg_s");
+  return cols;
+}
+
+std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c) {
+  const lbm::LatticeUnits u = c.units();
+  std::vector<double> rho;
+  std::vector<Vec3> vel;
+  s.density(rho);
+  s.velocity(vel);
+  // Fixed-block sums: the same bits at any thread count (STYLE §6). Solid cells read rho = 0.
+  const double fluid_cells = deterministic_sum(
+      rho.size(), [&](std::size_t i) { return rho[i] > 0 ? 1.0 : 0.0; }, 0.0);
+  const double speed = deterministic_sum(
+      vel.size(), [&](std::size_t i) { return vel[i].norm(); }, 0.0);
+  const double energy = deterministic_sum(
+      vel.size(), [&](std::size_t i) { return 0.5 * rho[i] * vel[i].squaredNorm(); }, 0.0);
+  const double mass = deterministic_sum(
+      rho.size(), [&](std::size_t i) { return rho[i]; }, 0.0);
+  const double cell_mass = c.density * c.dx * c.dx * c.dx;  // rho_lu = 1 in one cell [kg]
+  const double v = u.velocity_to_si(1.0);
+  std::vector<double> out = {fluid_cells > 0 ? v * speed / fluid_cells : 0.0,
+                             cell_mass * v * v * energy, cell_mass * mass};
+  for (int f = 0; f < 6; ++f)
+    if (open_face(c.faces[std::size_t(f)]))
+      out.push_back(u.mass_flow_to_si(s.mass_flow(s.face_body(f))));
+  return out;
+}
+
+void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
+                          const std::vector<double>& times) {
+  const lbm::LatticeUnits u = c.units();
+  const std::size_t index = times.size() - 1;
+  const std::size_t nx = std::size_t(c.cells[0]), ny = std::size_t(c.cells[1]),
+                    nz = std::size_t(c.cells[2]);
+  std::vector<double> rho;
+  std::vector<Vec3> vel;
+  s.density(rho);
+  s.velocity(vel);
+  std::vector<double> velocity(3 * vel.size()), pressure(rho.size()), porosity(rho.size(), 1.0);
+  const double v = u.velocity_to_si(1.0);
+  for (std::size_t i = 0; i < vel.size(); ++i)
+    for (int a = 0; a < 3; ++a) velocity[3 * i + std::size_t(a)] = v * vel[i][a];
+  // p - p_ref = (rho - rho_ref) c_s^2 (lattice), rho_ref = 1; solid cells (rho = 0) read 0.
+  for (std::size_t i = 0; i < rho.size(); ++i)
+    pressure[i] = rho[i] > 0 ? u.pressure_to_si((rho[i] - 1.0) * lbm::kCs2) : 0.0;
+  fs::create_directories(dir + "/snapshots");
+  {
+    H5Out f(dir + "/" + snapshot_name(index));
+    f.attr("time_s", times.back());
+    f.write_array("/velocity_m_per_s", velocity, {nz, ny, nx, 3});
+    f.write_array("/pressure_Pa", pressure, {nz, ny, nx});
+    f.write_array("/porosity", porosity, {nz, ny, nx});
+    f.commit();
+  }
+  const Vec3 origin = c.cell_centre(0, 0, 0);
+  H5Out master(dir + "/fluid.h5");
+  master.write("/time_s", times);
+  master.group("/grid");
+  master.write("/grid/origin_m", std::vector<double>{origin[0], origin[1], origin[2]});
+  master.write("/grid/spacing_m", std::vector<double>{c.dx, c.dx, c.dx});
+  master.write("/grid/cells", std::vector<std::int32_t>{c.cells[0], c.cells[1], c.cells[2]});
+  master.attr("pressure_reference_density_kg_m3", c.density);
+  master.group("/snapshots");
+  for (std::size_t k = 0; k <= index; ++k) {
+    char link[32];
+    std::snprintf(link, sizeof link, "/snapshots/%06zu", k);
+    master.external_link(link, snapshot_name(k), "/");
+  }
+  master.commit();
+  // XDMF 3DCoRectMesh: dimensions, origin and spacing are given slowest axis first (z y x); the
+  // mesh's points are the cell centres, so Center="Node".
+  const std::string dims = std::to_string(nz) + " " + std::to_string(ny) + " " + std::to_string(nx);
+  std::string x =
+      "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      "  <Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t k = 0; k <= index; ++k) {
+    const std::string file = snapshot_name(k);
+    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + num(times[k]) +
+         "\"/>\n";
+    x += "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" + dims + "\"/>\n";
+    x += "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+         "     <DataItem Dimensions=\"3\" Format=\"XML\" NumberType=\"Float\" Precision=\"8\">" +
+         num(origin[2]) + " " + num(origin[1]) + " " + num(origin[0]) +
+         "</DataItem>\n"
+         "     <DataItem Dimensions=\"3\" Format=\"XML\" NumberType=\"Float\" Precision=\"8\">" +
+         num(c.dx) + " " + num(c.dx) + " " + num(c.dx) + "</DataItem>\n    </Geometry>\n";
+    const auto attr = [&](const char* name, bool vec) {
+      x += std::string("    <Attribute Name=\"") + name + "\" AttributeType=\"" +
+           (vec ? "Vector" : "Scalar") + "\" Center=\"Node\"><DataItem Dimensions=\"" + dims +
+           (vec ? " 3" : "") + "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + file +
+           ":/" + name + "</DataItem></Attribute>\n";
+    };
+    attr("velocity_m_per_s", true);
+    attr("pressure_Pa", false);
+    attr("porosity", false);
+    x += "   </Grid>\n";
+  }
+  x += "  </Grid>\n </Domain>\n</Xdmf>\n";
+  write_file_atomic(dir + "/fluid.xdmf", x);
+}
+
+void save_fluid(H5Out& f, const lbm::LbmSolver& s) {
+  const double* p = s.pdf().data();
+  f.group("/fluid");
+  f.write("/fluid/populations", std::vector<double>(p, p + s.pdf().size()));
+  f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");
+  f.attr("steps", std::int64_t(s.steps()), "/fluid");
+}
+
+void load_fluid(const H5In& f, lbm::LbmSolver& s) {
+  if (!f.has("/fluid/populations"))
+    throw std::runtime_error(
+        "the checkpoint holds no gas state (/fluid); was it written by a run "
+        "without [fluid]?");
+  s.load_state(f.doubles("/fluid/populations"),
+               f.attr_int("aa_swapped", "/fluid") ? lbm::AaState::swapped : lbm::AaState::natural,
+               long(f.attr_int("steps", "/fluid")));
+}
+
+std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const FluidConfig& c,
+                                              double time, std::int64_t dem_step) {
+  const auto bad = s.find_unhealthy(1 - kHealthyDensity, 1 + kHealthyDensity, kHealthySpeed);
+  if (!bad) return std::nullopt;
+  const lbm::LatticeUnits u = c.units();
+  const Vec3 x = c.cell_centre(bad->x, bad->y, bad->z);
+  const auto vec = [](const Vec3& v) {
+    return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
+  };
+  return "gas diverged at t = " + to_text(time) + " s (DEM step " + std::to_string(dem_step) +
+         ", gas step " + std::to_string(s.steps()) + "): cell (" + std::to_string(bad->x) + ", " +
+         std::to_string(bad->y) + ", " + std::to_string(bad->z) + ") at " + vec(x) +
+         " m has rho/rho_ref = " + to_text(bad->rho) + " and speed " +
+         to_text(u.velocity_to_si(bad->speed)) + " m/s (healthy: " + to_text(1 - kHealthyDensity) +
+         " - " + to_text(1 + kHealthyDensity) + ", below " +
+         to_text(u.velocity_to_si(kHealthySpeed)) +
+         " m/s); the last checkpoint and output are kept; fix: lower fluid.dt (or "
+         "fluid.lattice_velocity), refine fluid.dx, or use fluid.collision = \"les\"";
+}
+
+}  // namespace lbdem::scenarios

@@ -1,0 +1,45 @@
+#pragma once
+// The gas part of a run folder (DESIGN §3), in SI only: snapshots in fluid.h5 + fluid.xdmf (cell
+// centres of a 3DCoRectMesh, at the instants of the particle snapshots), timeseries.csv columns,
+// the populations in checkpoint.h5, and the divergence watchdog. Every file is written atomically
+// (H5Out, write_file_atomic), so a stopped or failed run leaves only whole files.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/h5.hpp"
+#include "lbm/lbm_solver.hpp"
+#include "scenarios/common/fluid_config.hpp"
+
+namespace lbdem::scenarios {
+
+/// gas_mean_speed_m_s, gas_kinetic_energy_J, gas_mass_kg, then gas_mass_flow_<face>_kg_s (into
+/// the box during the last gas step) for every inlet and outlet face.
+std::vector<std::string> fluid_columns(const FluidConfig& c);
+std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c);
+
+/// Writes snapshots/fluid_NNNNNN.h5 for the last entry of `times` (index times.size() - 1) and
+/// rewrites fluid.h5 (time_s, grid, external links to every snapshot) and fluid.xdmf. Datasets,
+/// row-major (z, y, x[, component]): velocity_m_per_s, pressure_Pa (p - p_ref =
+/// (rho - rho_ref) c_s^2), porosity (1: no particles in the gas yet).
+void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
+                          const std::vector<double>& times);
+
+/// Populations, AA state and gas step count under /fluid of a checkpoint.
+void save_fluid(H5Out& f, const lbm::LbmSolver& s);
+void load_fluid(const H5In& f, lbm::LbmSolver& s);
+
+/// Watchdog limits [lattice units]: rho within +-20 % of the reference, several times the 3 %
+/// that check_stability allows for the static Dp (plus ~4 % dynamic pressure at the 0.3 Mach
+/// limit), so a healthy run never trips it; and speed below 0.5 (Mach 0.87), where the
+/// second-order equilibrium no longer models a gas. A diverging run passes both within a few
+/// dozen steps of going to NaN, so the limits catch it while the last output is still sane.
+inline constexpr double kHealthyDensity = 0.2, kHealthySpeed = 0.5;
+
+/// nullopt if every cell is within the limits; else the one-line error: simulated time, DEM and
+/// gas step, the cell and its SI centre, rho / rho_ref and speed in m/s, and the fix.
+std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const FluidConfig& c,
+                                              double time, std::int64_t dem_step);
+
+}  // namespace lbdem::scenarios
