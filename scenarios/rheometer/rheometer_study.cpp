@@ -50,6 +50,13 @@ const std::vector<Case>& cases() {
       {"cg1_6_hertz", "cg1_6_hertz", "hertz", 1.6, {}, "dt 3.6 us x l"},
       {"cg2_hertz", "cg2_hertz", "hertz", 2, {}, "dt 3.6 us x l"},
       {"cg1_tc50", "cg1", "seed (l = 1)", 1, {"dem.dt=1.1e-6"}, "dt t_c/50"},
+      // t_c = 110 us for the l = 2 parcels under stiffness_only (k x 2, mass x 8): t_c/50.
+      {"cg2_tc50",
+       "cg2",
+       "stiffness_only",
+       2,
+       {"coarse_grain.scale_dt=false", "dem.dt=2.2e-6"},
+       "dt t_c/50"},
       // Explanations of the CG torque change (issue 9 §4). Gap jamming: a 2 mm blade-wall gap is
       // 0.93 parcel diameters at l = 2, as the 1 mm gap is at l = 1; its CG 1 reference has the
       // same geometry. Parcels across the blade: a 20 mm blade has 9.3 parcels across its height at
