@@ -16,6 +16,9 @@
 // u(x). The velocities are sampled before the step's kernel from the populations in the current AA
 // state (moments.hpp, Guo-corrected), when all of them are still in place.
 //
+// The equilibrium bracket is the free-gas one (eps = 1): outlets belong in particle-free gas, where
+// the porous form's 1/eps terms (forcing/porous.hpp) are 1.
+//
 // Per step and link the fluid gains the mass f_qbar(x, t+1) - f_q*(x, t) (negative: outflow) and
 // the body the momentum c_q [f_q*(x, t) + f_qbar(x, t+1)] (the pressure force on the outlet).
 #include "core/types.hpp"

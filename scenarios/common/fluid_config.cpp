@@ -118,13 +118,17 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   // Along a wall-bounded axis a force density F is held by a static pressure gradient, so the
   // pressure varies by |F_a| L_a across the box; along a periodic axis it drives flow instead.
   // An outlet held at a gauge pressure p differs from the reference by |p| as well.
-  double dp_default = 0;
+  double dp_default = 0, dp_outlets = 0;
   for (int a = 0; a < 3; ++a)
     if (!periodic[std::size_t(a)]) dp_default += std::abs(c.body_force[a]) * (hi[a] - lo[a]);
-  for (const FluidFace& f : c.faces) dp_default = std::max(dp_default, std::abs(f.pressure));
-  c.pressure_difference = fluid.get(
-      "pressure_difference", dp_default,
-      Range::non_negative("give the largest static pressure difference in Pa (bed weight, ...)"));
+  for (const FluidFace& f : c.faces) dp_outlets = std::max(dp_outlets, std::abs(f.pressure));
+  // An outlet's gauge pressure is a static difference the lattice carries whatever the user
+  // declares, so it always enters the check.
+  c.pressure_difference = std::max(
+      dp_outlets,
+      fluid.get("pressure_difference", std::max(dp_default, dp_outlets),
+                Range::non_negative(
+                    "give the largest static pressure difference in Pa (bed weight, ...)")));
 
   c.collision = fluid.get_choice("collision", "trt", {"trt", "bgk", "les"});
   double tau_margin = 1e-4;  // check_stability's default, for TRT (units.hpp)

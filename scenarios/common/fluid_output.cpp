@@ -72,15 +72,18 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
   const std::size_t index = times.size() - 1;
   const std::size_t nx = std::size_t(c.cells[0]), ny = std::size_t(c.cells[1]),
                     nz = std::size_t(c.cells[2]);
-  std::vector<double> rho;
+  std::vector<double> rho, porosity;
   std::vector<Vec3> vel;
   s.density(rho);
   s.velocity(vel);
-  std::vector<double> velocity(3 * vel.size()), pressure(rho.size()), porosity(rho.size(), 1.0);
+  s.porosity(porosity);  // 1 in gas without particles, 0 in solid cells
+  std::vector<double> velocity(3 * vel.size()), pressure(rho.size());
   const double v = u.velocity_to_si(1.0);
   for (std::size_t i = 0; i < vel.size(); ++i)
     for (int a = 0; a < 3; ++a) velocity[3 * i + std::size_t(a)] = v * vel[i][a];
-  // p - p_ref = (rho - rho_ref) c_s^2 (lattice), rho_ref = 1; solid cells (rho = 0) read 0.
+  // p - p_ref = (rho - rho_ref) c_s^2 (lattice), rho_ref = 1; solid cells (rho = 0) read 0. In
+  // the porous form (lbm/forcing/porous.hpp) rho c_s^2 is eps p, the pressure the momentum
+  // balance carries; the coupling, which sets eps, decides what it reports.
   for (std::size_t i = 0; i < rho.size(); ++i)
     pressure[i] = rho[i] > 0 ? u.pressure_to_si((rho[i] - 1.0) * lbm::kCs2) : 0.0;
   fs::create_directories(dir + "/snapshots");

@@ -52,7 +52,7 @@ double interpolate(const std::vector<double>& pos, const std::vector<double>& va
 }  // namespace
 
 TEST_CASE("Lid-driven cavity at Re = 100 matches Ghia et al. 1982", "[lbm][cavity][slow]") {
-  const std::string data = std::string(LBDEM_SOURCE_DIR) + "/../shared/data/";
+  const std::string data = std::string(LBDEM_SOURCE_DIR) + "/tests/data/";
   const auto u_ref = read_reference(data + "ghia1982_re100_u_vertical_centreline.csv");
   const auto v_ref = read_reference(data + "ghia1982_re100_v_horizontal_centreline.csv");
 

@@ -1,7 +1,8 @@
-// Hydrostatics: a closed column under a body force settles to dp/dz = -rho g, with the lattice
-// pressure p = rho c_s^2, so rho(z) = rho(0) exp(-g z / c_s^2). The column's relative density
-// change g H / c_s^2 is exactly what the static-pressure check of units.hpp predicts from the SI
-// set-up (Dp / (rho c_s^2) with Dp = rho g H), so the check and the lattice are tested together.
+// Hydrostatics: a closed column under a uniform force density rho0 g settles to dp/dz = -rho0 g,
+// with the lattice pressure p = rho c_s^2, so rho falls linearly with height. The column's
+// relative density change g H / c_s^2 is exactly what the static-pressure check of units.hpp
+// predicts from the SI set-up (Dp / (rho c_s^2) with Dp = rho g H), so the check and the lattice
+// are tested together.
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
@@ -76,20 +77,21 @@ TEST_CASE("Hydrostatic column holds rho g H, and the pressure check predicts its
   CHECK_THROWS_AS(check_at(dt_bad), InputError);
 
   // The lattice column at each of those steps: g_lattice = g dt^2 / dx. Its measured density
-  // change must equal the check's prediction (1 %, the issue's tolerance; the balance is linear
-  // and exact on the lattice, so the measured error is round-off), and the gas stays at rest.
+  // change must equal the check's prediction. The issue asks for 1 %; the balance is linear and
+  // exact on the lattice and the transient has decayed, so what remains is round-off (measured
+  // 4e-13): 1e-10 bounds it with room.
   for (double dt : {dt_ok, dt_warn, dt_bad}) {
     const double g = g_si * dt * dt / dx;
     const Column c = settle(h, g);
     INFO("dt " << dt << " g_lattice " << g << " dp " << c.dp_measured << " exact " << c.dp_exact
                << " u_max " << c.u_max);
-    CHECK(c.dp_measured == Approx(c.dp_exact).epsilon(0.01));
+    CHECK(c.dp_measured == Approx(c.dp_exact).epsilon(1e-10));
     // Predicted Dp / (rho c_s^2) over the full height H = h cells (walls half a cell beyond the
     // outer centres) against the measured one over h - 1 cells, scaled to h.
     CHECK(c.dp_measured / kCs2 * h / (h - 1) ==
-          Approx(LatticeUnits{dx, dt, rho}.density_change(dp_si)).epsilon(0.01));
+          Approx(LatticeUnits{dx, dt, rho}.density_change(dp_si)).epsilon(1e-10));
     // Spurious velocity: Guo forcing and half-way walls balance a force exactly in a gas at
-    // rest; 1e-6 of the column's sound-speed scale g h / c_s leaves room for round-off only.
-    CHECK(c.u_max < 1e-6 * g * h / std::sqrt(kCs2));
+    // rest; measured 1.3e-13 of the column's velocity scale g h / c_s, bound 1e-11.
+    CHECK(c.u_max < 1e-11 * g * h / std::sqrt(kCs2));
   }
 }

@@ -281,7 +281,6 @@ TEST_CASE("LES round jet at Re = 1e4 stays bounded over 10 flow-through times",
   // tau - 1/2 ~ 3 (C_s dx)^2 U ~ 3e-3, 13 times tau0 - 1/2: ask for 5 (measured 22).
   INFO("effective tau - 1/2: min " << r.tau_min << ", max " << r.tau_max << ", shear layer "
                                    << r.tau_shear << "; molecular " << tau0 - 0.5);
-  CHECK(r.tau_min >= tau0 - 0.5 - 1e-12);
   CHECK(r.tau_shear > 2.5 * (tau0 - 0.5));
   CHECK(r.tau_max > 5 * (tau0 - 0.5));
 

@@ -92,9 +92,9 @@ TEST_CASE("Porous medium: Brinkman flow in a porous channel", "[lbm]") {
   }
   INFO("max error / u_Darcy " << err / u_d);
   // TRT at Lambda = 3/16 puts a parabola's wall exactly half-way; the Brinkman profile is not a
-  // parabola, and the Darcy term shifts the effective wall by O((r dx)^2) (Ginzburg 2008): with
-  // r dx = 1/8 that is ~1.6 % of the boundary-layer gradient scale, i.e. below 1 % of u_Darcy.
-  CHECK(err < 0.01 * u_d);
+  // parabola, and the Darcy term shifts the effective wall by O((r dx)^2) (Ginzburg 2008), r dx =
+  // 1/8 here. Measured 1.4e-4 of u_Darcy; 1e-3 leaves a factor 7 for that error.
+  CHECK(err < 1e-3 * u_d);
 }
 
 TEST_CASE("Porous medium: a step in the fluid fraction", "[lbm]") {
