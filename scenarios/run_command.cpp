@@ -160,6 +160,7 @@ int run_scenario(const RunOptions& opt) {
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"
             << "  config.toml log.txt timeseries.csv particles.h5 particles.xdmf collisions.h5 "
                "checkpoint.h5"
+            << (fs::exists(dir + "/fluid.h5") ? " fluid.h5 fluid.xdmf" : "")
             << (ctx.plots ? " energy_budget.png kinetic_energy.png" : "") << "\n";
   return rc;
 }
