@@ -1,0 +1,390 @@
+#include "coupling/kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lbdem::coupling {
+
+namespace {
+
+// Discrete variance sum k^2 g(k) / sum g(k) of the triweight g(k) = (1 - (k/R)^2)^3, |k| < R.
+double triweight_variance(double r) {
+  double s0 = 1.0, s2 = 0.0;
+  for (int k = 1; k < r; ++k) {
+    const double u = 1.0 - (k / r) * (k / r);
+    const double g = u * u * u;
+    s0 += 2.0 * g;
+    s2 += 2.0 * double(k) * k * g;
+  }
+  return s2 / s0;
+}
+
+void require_size(std::size_t got, std::size_t want, const char* what) {
+  if (got != want)
+    throw std::invalid_argument(std::string("ParticleKernel: ") + what + " has " +
+                                std::to_string(got) + " entries, expected " + std::to_string(want));
+}
+
+}  // namespace
+
+ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
+                               std::span<const std::uint8_t> solid)
+    : grid_(grid), frame_(frame), width_(width), dx_(frame.dx) {
+  // Below sigma = dx the filter has fewer than 5 taps, and the trilinear step's share of the
+  // variance, f (1 - f) (0 to 1/4 cell^2 with the position in the cell), would dominate the width.
+  if (!(width >= dx_ && std::isfinite(width)))
+    throw std::invalid_argument("kernel width " + std::to_string(width) +
+                                " m is below the cell size " + std::to_string(dx_) +
+                                " m; use at least one cell (default_kernel_width)");
+  // The trilinear step adds f (1 - f) to the variance, 1/6 on average over the cell, so the filter
+  // carries the rest. var(R) rises continuously from 0 at R = 1 (one tap) past s2 at 3 s + 3
+  // (about R^2 / 9 for large R): bisection to round-off.
+  const double s2 = (width / dx_) * (width / dx_) - 1.0 / 6.0;
+  double lo = 1.0, hi = 3.0 * std::sqrt(s2) + 3.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (triweight_variance(mid) < s2 ? lo : hi) = mid;
+  }
+  radius_ = hi;
+  half_ = int(std::ceil(radius_)) - 1;
+  taps_.resize(std::size_t(half_) + 1);
+  double sum = 0;
+  for (int k = 0; k <= half_; ++k) {
+    const double u = 1.0 - (k / radius_) * (k / radius_);
+    taps_[std::size_t(k)] = u * u * u;
+    sum += (k == 0 ? 1.0 : 2.0) * taps_[std::size_t(k)];
+  }
+  for (double& g : taps_) g /= sum;
+
+  const auto ncell = std::size_t(grid_.cells());
+  gas_.assign(ncell, 1);
+  if (!solid.empty()) {
+    require_size(solid.size(), ncell, "solid mask");
+    for (std::size_t c = 0; c < ncell; ++c) gas_[c] = solid[c] ? 0 : 1;
+  }
+  for (int a = 0; a < 3; ++a) {
+    const int n = grid_.extent(a);
+    auto& list = tap_list_[std::size_t(a)];
+    list.assign(std::size_t(n), {});
+    for (int i = 0; i < n; ++i)
+      for (int k = -half_; k <= half_; ++k) {
+        int j = i + k;
+        if (grid_.periodic(a))
+          j = ((j % n) + n) % n;  // a kernel wider than the box wraps more than once
+        else if (j < 0 || j >= n)
+          continue;
+        list[std::size_t(i)].push_back({j, taps_[std::size_t(std::abs(k))]});
+      }
+  }
+  std::vector<double> m(gas_.begin(), gas_.end()), z;
+  filter(m, z);
+  inv_z_.resize(ncell);
+  for (std::size_t c = 0; c < ncell; ++c) inv_z_[c] = z[c] > 0 ? 1.0 / z[c] : 0.0;
+}
+
+std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags) {
+  const lbm::Grid& g = flags.grid();
+  std::vector<std::uint8_t> solid(std::size_t(g.cells()));
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x)
+        solid[std::size_t(g.compact_index(x, y, z))] = flags.at(x, y, z) != lbm::kFluid;
+  return solid;
+}
+
+void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out,
+                                 int axis) const {
+  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz();
+  out.resize(in.size());
+  const auto& list = tap_list_[std::size_t(axis)];
+#pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y) {
+      double* o = out.data() + cell(0, y, z);
+      if (axis == 0) {
+        const double* row = in.data() + cell(0, y, z);
+        for (int x = 0; x < nx; ++x) {
+          double s = 0;
+          for (const Tap& t : list[std::size_t(x)]) s += t.g * row[t.j];
+          o[x] = s;
+        }
+      } else {
+        // Rows along y or z: accumulate whole x rows so that the inner loop is contiguous.
+        for (int x = 0; x < nx; ++x) o[x] = 0;
+        for (const Tap& t : list[std::size_t(axis == 1 ? y : z)]) {
+          const double* row = in.data() + (axis == 1 ? cell(0, t.j, z) : cell(0, y, t.j));
+          for (int x = 0; x < nx; ++x) o[x] += t.g * row[x];
+        }
+      }
+    }
+}
+
+void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out) const {
+  filter_axis(in, out, 0);
+  filter_axis(out, in, 1);
+  filter_axis(in, out, 2);
+}
+
+void ParticleKernel::locate(std::span<const Vec3> positions) {
+  const std::size_t np = positions.size();
+  if (np > std::size_t(UINT32_MAX))
+    throw std::invalid_argument("ParticleKernel: too many particles");
+  for (std::size_t p = 0; p < np; ++p)
+    if (!positions[p].allFinite())
+      throw std::invalid_argument("ParticleKernel::locate: particle " + std::to_string(p) +
+                                  " has a non-finite position");
+  std::vector<std::array<int, 3>> base(np);
+  std::vector<std::array<double, 8>> weight(np);
+  std::vector<Index> bin(np);
+  for (int a = 0; a < 3; ++a) bins_[std::size_t(a)] = grid_.extent(a) + (grid_.periodic(a) ? 0 : 1);
+
+#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  for (std::size_t p = 0; p < np; ++p) {
+    const Vec3 xl = frame_.to_lattice(positions[p]);
+    double f[3];
+    bool ok[3][2];
+    std::array<int, 3> lo;
+    Index b = 0, stride = 1;
+    for (int a = 0; a < 3; ++a) {
+      const int n = grid_.extent(a);
+      double t = xl[a];
+      if (grid_.periodic(a)) {
+        t -= n * std::floor(t / n);
+        if (!(t < n)) t = 0;  // t = n by round-off of a tiny negative coordinate
+      } else {
+        t = std::clamp(t, -0.5, n - 0.5);  // outside the box: at the face
+      }
+      const int i = int(std::floor(t));
+      f[a] = t - i;
+      lo[std::size_t(a)] = i;
+      ok[a][0] = grid_.periodic(a) || i >= 0;
+      ok[a][1] = grid_.periodic(a) || i + 1 < n;
+      b += (i + (grid_.periodic(a) ? 0 : 1)) * stride;
+      stride *= bins_[std::size_t(a)];
+    }
+    base[p] = lo;
+    bin[p] = b;
+    std::array<double, 8>& w = weight[p];
+    double sum = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const int c[3] = {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1};
+      w[std::size_t(corner)] = 0;
+      if (!(ok[0][c[0]] && ok[1][c[1]] && ok[2][c[2]])) continue;
+      int q[3];
+      for (int a = 0; a < 3; ++a) {
+        q[a] = lo[std::size_t(a)] + c[a];
+        if (q[a] == grid_.extent(a)) q[a] = 0;  // periodic wrap (a non-periodic n is not ok)
+      }
+      if (inv_z_[std::size_t(cell(q[0], q[1], q[2]))] == 0) continue;  // no gas within reach
+      const double wc =
+          (c[0] ? f[0] : 1 - f[0]) * (c[1] ? f[1] : 1 - f[1]) * (c[2] ? f[2] : 1 - f[2]);
+      w[std::size_t(corner)] = wc;
+      sum += wc;
+    }
+    if (sum > 0)
+      for (double& wc : w) wc /= sum;
+  }
+
+  // Counting sort by bin: serial and stable, so each bin lists its particles by index and the
+  // gathers below add them in an order fixed by the input alone. The particle data are then kept
+  // in bin order, which makes the per-cell gathers read memory contiguously.
+  const Index nbins = Index(bins_[0]) * bins_[1] * bins_[2];
+  bin_start_.assign(std::size_t(nbins) + 1, 0);
+  for (std::size_t p = 0; p < np; ++p) ++bin_start_[std::size_t(bin[p]) + 1];
+  for (Index k = 0; k < nbins; ++k) bin_start_[std::size_t(k) + 1] += bin_start_[std::size_t(k)];
+  bin_items_.resize(np);
+  base_.resize(np);
+  weight_.resize(np);
+  std::vector<Index> fill(bin_start_.begin(), bin_start_.end() - 1);
+  unmapped_ = 0;
+  first_unmapped_ = -1;
+  for (std::size_t p = 0; p < np; ++p) {
+    const auto k = std::size_t(fill[std::size_t(bin[p])]++);
+    bin_items_[k] = std::uint32_t(p);
+    base_[k] = base[p];
+    weight_[k] = weight[p];
+    bool any = false;
+    for (double wc : weight[p]) any = any || wc > 0;
+    if (!any && unmapped_++ == 0) first_unmapped_ = Index(p);
+  }
+}
+
+template <int NC>
+void ParticleKernel::gather_sources(const std::vector<double>& qs,
+                                    std::array<std::vector<double>, 3>& src) const {
+  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz();
+  for (int a = 0; a < NC; ++a) src[std::size_t(a)].assign(std::size_t(grid_.cells()), 0.0);
+  // Bin coordinate of the lower corner at cell i - c (c = 0 or 1) along axis a.
+  auto bin_coord = [&](int a, int i, int c) {
+    const int j = i - c;
+    return grid_.periodic(a) ? (j < 0 ? j + grid_.extent(a) : j) : j + 1;
+  };
+#pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y) {
+      Index row_bin[4];  // by corner >> 1 = (cy, cz)
+      for (int r = 0; r < 4; ++r)
+        row_bin[r] =
+            Index(bins_[0]) * (bin_coord(1, y, r & 1) + Index(bins_[1]) * bin_coord(2, z, r >> 1));
+      for (int x = 0; x < nx; ++x) {
+        double s[NC] = {};
+        for (int corner = 0; corner < 8; ++corner) {
+          const auto b = std::size_t(row_bin[corner >> 1] + bin_coord(0, x, corner & 1));
+          for (Index k = bin_start_[b]; k < bin_start_[b + 1]; ++k) {
+            const double w = weight_[std::size_t(k)][std::size_t(corner)];
+            for (int a = 0; a < NC; ++a) s[a] += w * qs[std::size_t(k) * NC + std::size_t(a)];
+          }
+        }
+        const auto c = std::size_t(cell(x, y, z));
+        for (int a = 0; a < NC; ++a) src[std::size_t(a)][c] = s[a] * inv_z_[c];
+      }
+    }
+}
+
+template <int NC>
+void ParticleKernel::sample(const std::array<std::vector<double>, 3>& v, double* out) const {
+  const std::size_t np = particle_count();
+#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  for (std::size_t k = 0; k < np; ++k) {
+    double s[NC] = {};
+    for (int corner = 0; corner < 8; ++corner) {
+      const double w = weight_[k][std::size_t(corner)];
+      if (w == 0) continue;  // also every corner outside a non-periodic box
+      int q[3];
+      for (int a = 0; a < 3; ++a) {
+        q[a] = base_[k][std::size_t(a)] + ((corner >> a) & 1);
+        if (q[a] == grid_.extent(a)) q[a] = 0;
+      }
+      const auto c = std::size_t(cell(q[0], q[1], q[2]));
+      for (int a = 0; a < NC; ++a) s[a] += w * v[std::size_t(a)][c];
+    }
+    for (int a = 0; a < NC; ++a) out[std::size_t(bin_items_[k]) * NC + std::size_t(a)] = s[a];
+  }
+}
+
+void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v) const {
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < in.size(); ++c) in[c] = gas_[c] ? in[c] : 0.0;
+  filter(in, v);
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < v.size(); ++c) v[c] *= inv_z_[c];
+}
+
+void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out) const {
+  require_size(q.size(), particle_count(), "deposit input");
+  std::vector<double> qs(q.size());
+  for (std::size_t k = 0; k < qs.size(); ++k) qs[k] = q[bin_items_[k]];
+  std::array<std::vector<double>, 3> src;
+  gather_sources<1>(qs, src);
+  filter(src[0], out);
+  const double inv_v = 1.0 / cell_volume();
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? out[c] * inv_v : 0.0;
+}
+
+void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const {
+  require_size(q.size(), particle_count(), "deposit input");
+  std::vector<double> qs(3 * q.size());
+  for (std::size_t k = 0; k < q.size(); ++k)
+    for (int a = 0; a < 3; ++a) qs[3 * k + std::size_t(a)] = q[bin_items_[k]][a];
+  std::array<std::vector<double>, 3> src;
+  gather_sources<3>(qs, src);
+  out.resize(std::size_t(grid_.cells()));
+  std::vector<double> dep;
+  const double inv_v = 1.0 / cell_volume();
+  for (int a = 0; a < 3; ++a) {
+    filter(src[std::size_t(a)], dep);
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+    for (std::size_t c = 0; c < dep.size(); ++c) out[c][a] = gas_[c] ? dep[c] * inv_v : 0.0;
+  }
+}
+
+// Transpose of deposit(): v(c) = sum_c' m(c') G(c' - c) field(c') / Z(c), then trilinear weights.
+void ParticleKernel::interpolate(std::span<const double> field, std::vector<double>& out) const {
+  require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
+  std::vector<double> in(field.begin(), field.end());
+  std::array<std::vector<double>, 3> v;
+  smooth(in, v[0]);
+  out.resize(particle_count());
+  sample<1>(v, out.data());
+}
+
+void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const {
+  require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
+  std::array<std::vector<double>, 3> v;
+  std::vector<double> in(field.size());
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t c = 0; c < in.size(); ++c) in[c] = field[c][a];
+    smooth(in, v[std::size_t(a)]);
+  }
+  out.resize(particle_count());
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
+  sample<3>(v, out.data()->data());
+}
+
+PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, double eps_min,
+                                            std::vector<double>& eps) const {
+  require_size(radii.size(), particle_count(), "radii");
+  if (!(eps_min > 0 && eps_min <= 1))
+    throw std::invalid_argument("eps_min must lie in (0, 1], got " + std::to_string(eps_min));
+  std::vector<double> vol(radii.size());
+  for (std::size_t p = 0; p < radii.size(); ++p) vol[p] = 4.0 / 3.0 * kPi * std::pow(radii[p], 3);
+  deposit(vol, eps);  // solid fraction phi
+  PorosityReport r;
+  for (std::size_t c = 0; c < eps.size(); ++c) {
+    if (!gas_[c]) {
+      eps[c] = 1.0;
+      continue;
+    }
+    const double e = 1.0 - eps[c];
+    r.lowest = std::min(r.lowest, e);
+    if (e < eps_min) {
+      if (r.clipped++ == 0) {
+        const auto xyz =
+            std::array<Index, 3>{Index(c) % grid_.nx(), Index(c) / grid_.nx() % grid_.ny(),
+                                 Index(c) / (Index(grid_.nx()) * grid_.ny())};
+        r.first = {int(xyz[0]), int(xyz[1]), int(xyz[2])};
+      }
+      eps[c] = eps_min;
+    } else {
+      eps[c] = e;
+    }
+  }
+  return r;
+}
+
+void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad) const {
+  require_size(p.size(), std::size_t(grid_.cells()), "pressure field");
+  const int n[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
+  grad.assign(p.size(), Vec3::Zero());
+#pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x) {
+        const auto c = std::size_t(cell(x, y, z));
+        if (!gas_[c]) continue;
+        const int at[3] = {x, y, z};
+        for (int a = 0; a < 3; ++a) {
+          // Neighbours at -1 and +1 along a: wrapped, or absent outside a non-periodic box.
+          std::size_t nb[2];
+          bool ok[2];
+          for (int s = 0; s < 2; ++s) {
+            int q[3] = {x, y, z};
+            q[a] = grid_.shift(a, at[a], s ? 1 : -1);
+            ok[s] = q[a] >= 0 && q[a] < n[a];
+            nb[s] = ok[s] ? std::size_t(cell(q[0], q[1], q[2])) : 0;
+            ok[s] = ok[s] && gas_[nb[s]];
+          }
+          if (ok[0] && ok[1])
+            grad[c][a] = (p[nb[1]] - p[nb[0]]) / (2 * dx_);
+          else if (ok[1])
+            grad[c][a] = (p[nb[1]] - p[c]) / dx_;
+          else if (ok[0])
+            grad[c][a] = (p[c] - p[nb[0]]) / dx_;
+        }
+      }
+}
+
+}  // namespace lbdem::coupling
