@@ -46,14 +46,12 @@ void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity
 
 WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
                            const Vec3& origin) {
-  const bool swapped = now == AaState::swapped;
   // The summand applies its link as a side effect: deterministic_sum calls it once per k.
   return deterministic_sum(
       links.size(),
       [&](std::size_t k) -> WallLoad {
-        const int q = links.dir[k], o = opposite(q);
-        double& from = swapped ? pdf.at(o, links.fluid[k]) : pdf.at(q, links.solid[k]);
-        double& to = swapped ? pdf.at(q, links.solid[k]) : pdf.at(o, links.fluid[k]);
+        const int q = links.dir[k];
+        auto [from, to] = link_slots(pdf, now, links, k);
         const double post = from;  // f_q*(x, t)
         to = post + links.correction[k];
         const double m = 2.0 * post + links.correction[k];

@@ -58,6 +58,20 @@ struct WallLoad {
   }
 };
 
+/// The two slots of link k for the state a step has just produced (the AA rule of the header
+/// comment, in one place for every link-wise boundary): `from` holds f_q*(x, t), `to` is where
+/// f_qbar(x, t+1) must go.
+struct LinkSlots {
+  double& from;
+  double& to;
+};
+inline LinkSlots link_slots(PdfField& pdf, AaState now, const BounceBackLinks& links,
+                            std::size_t k) {
+  const int q = links.dir[k], o = opposite(q);
+  if (now == AaState::swapped) return {pdf.at(o, links.fluid[k]), pdf.at(q, links.solid[k])};
+  return {pdf.at(q, links.solid[k]), pdf.at(o, links.fluid[k])};
+}
+
 /// Lists every fluid-to-solid link, one list per body id 1 .. n_bodies (entry k - 1 for body k),
 /// in storage order, with zero wall velocity.
 std::vector<BounceBackLinks> build_links(const FlagField& flags, int n_bodies);

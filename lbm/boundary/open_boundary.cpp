@@ -33,16 +33,14 @@ PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags
 
 WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
                                 const PressureOutlet& outlet, const Vec3& origin) {
-  const bool swapped = now == AaState::swapped;
   const double rho = outlet.density;
   // The summand applies its link as a side effect: deterministic_sum calls it once per k. Slots
   // as in apply_bounce_back (bounce_back.hpp).
   return deterministic_sum(
       links.size(),
       [&](std::size_t k) -> WallLoad {
-        const int q = links.dir[k], o = opposite(q);
-        double& from = swapped ? pdf.at(o, links.fluid[k]) : pdf.at(q, links.solid[k]);
-        double& to = swapped ? pdf.at(q, links.solid[k]) : pdf.at(o, links.fluid[k]);
+        const int q = links.dir[k];
+        auto [from, to] = link_slots(pdf, now, links, k);
         const Vec3& u = outlet.velocity[outlet.near_cell[k]];
         const Vec3& u_in = outlet.velocity[outlet.inward_cell[k]];
         const Vec3 uw = u + 0.5 * (u - u_in);  // exactly u(x) when there is no inward cell
