@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 #include "core/config.hpp"
 #include "core/error.hpp"
@@ -154,6 +155,14 @@ TorqueSummary summarize_torque(const std::vector<double>& t, const std::vector<d
   return out;
 }
 
+// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
+std::pair<double, double> read_timing(const std::string& dir) {
+  std::ifstream in(dir + "/study_timing.txt");
+  double wall = 0, simulated = 0;
+  if (!(in >> wall >> simulated)) return {0.0, 0.0};
+  return {wall, simulated};
+}
+
 int run_rheometer_study(const StudyOptions& opt) {
   std::vector<const Case*> todo;
   for (const auto& c : cases())
@@ -208,14 +217,28 @@ int run_rheometer_study(const StudyOptions& opt) {
       const int rc = run_scenario(ro);
       wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (rc != 0) return rc;
+      // Wall and simulated time summed over the invocations that advanced the case, so the table
+      // keeps its cost however often it was resumed.
+      const double t_after = last_time(dir + "/timeseries.csv");
+      const auto [wall0, sim0] = read_timing(dir);
+      write_file_atomic(dir + "/study_timing.txt",
+                        fmt(wall0 + wall, "%.17g") + " " +
+                            fmt(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_before), "%.17g") +
+                            "\n");
     }
+  }
+  // The table holds every case of the study folder, not only those of this invocation.
+  for (const auto& case_ : cases()) {
+    const Case* c = &case_;
+    const std::string dir = root + "/" + c->name;
+    if (!fs::exists(dir + "/config.toml") || !fs::exists(dir + "/timeseries.csv")) continue;
     const Config cfg = Config::from_file(dir + "/config.toml");
     const Series s = read_torque(dir + "/timeseries.csv");
     const double start = cfg.section("rheometer").get("start", 0.2);
     const double rpm = cfg.section("rheometer").get("rpm", 600.0);
     const TorqueSummary ts = summarize_torque(s.t, s.torque, start, rpm);
-    // Simulated time of this invocation (the whole run if it was already done: no wall time).
-    const double simulated = (s.t.empty() ? 0.0 : s.t.back()) - (done ? 0.0 : t_before);
+    const double simulated = s.t.empty() ? 0.0 : s.t.back();
+    const auto [wall, timed] = read_timing(dir);
     const double l = c->l;
     const double gap = cfg.section("rheometer").get("cup_radius", 0.025) -
                        0.5 * cfg.section("rheometer").get("blade_span", 0.048);
@@ -227,8 +250,8 @@ int run_rheometer_study(const StudyOptions& opt) {
           << fmt(std::round(mass / (rho * 4.0 / 3.0 * kPi * std::pow(l * r0, 3))), "%.0f") << ","
           << fmt(gap / (2 * l * r0)) << "," << fmt(ts.peak) << "," << fmt(ts.steady) << ","
           << fmt(ts.steady_err) << "," << fmt(ts.fluctuation) << "," << ts.blocks << ","
-          << fmt(simulated) << ","
-          << (wall > 0 && simulated > 0 ? fmt(wall / simulated) : std::string("")) << "\n";
+          << fmt(simulated) << "," << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""))
+          << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
   // Torque overlay and spectra (tools/): the steady window of every case, labelled by case name.
