@@ -181,7 +181,8 @@ int run_rheometer_study(const StudyOptions& opt) {
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   std::ostringstream table;
-  table << "case,rule,size_factor,note,parcels,gap_parcel_diameters,peak_torque_Nm,"
+  table << "case,rule,size_factor,note,parcels,gap_parcel_diameters,parcels_across_blade,"
+           "peak_torque_Nm,"
            "steady_torque_Nm,steady_torque_err_Nm,fluctuation_Nm,blocks,simulated_s,"
            "wall_s_per_simulated_s\n";
   for (const Case* c : todo) {
@@ -248,10 +249,11 @@ int run_rheometer_study(const StudyOptions& opt) {
     const double mass = cfg.section("rheometer").get("fill_mass", 43.6e-3);
     table << c->name << "," << c->rule << "," << l << "," << c->note << ","
           << fmt(std::round(mass / (rho * 4.0 / 3.0 * kPi * std::pow(l * r0, 3))), "%.0f") << ","
-          << fmt(gap / (2 * l * r0)) << "," << fmt(ts.peak) << "," << fmt(ts.steady) << ","
-          << fmt(ts.steady_err) << "," << fmt(ts.fluctuation) << "," << ts.blocks << ","
-          << fmt(simulated) << "," << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""))
-          << "\n";
+          << fmt(gap / (2 * l * r0)) << ","
+          << fmt(cfg.section("rheometer").get("blade_height", 0.01) / (2 * l * r0)) << ","
+          << fmt(ts.peak) << "," << fmt(ts.steady) << "," << fmt(ts.steady_err) << ","
+          << fmt(ts.fluctuation) << "," << ts.blocks << "," << fmt(simulated) << ","
+          << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string("")) << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
   // Torque overlay and spectra (tools/): the steady window of every case, labelled by case name.
