@@ -10,41 +10,14 @@
 #include <unistd.h>
 
 #include "core/h5.hpp"
+#include "helpers/cli.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-struct Result {
-  int code;
-  std::string err;
-};
-
-Result cli(const std::string& args) {
-  // Unique per process and call: ctest runs test processes side by side.
-  static int calls = 0;
-  const std::string errfile =
-      fs::temp_directory_path() /
-      ("lbdem_cli_err_" + std::to_string(::getpid()) + "_" + std::to_string(calls++));
-  const std::string cmd =
-      std::string(LBDEM_CLI) + " " + args + " --no-plots > /dev/null 2> " + errfile;
-  const int rc = std::system(cmd.c_str());
-  std::string err;
-  if (FILE* f = std::fopen(errfile.c_str(), "r")) {
-    char buf[4096];
-    std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) err.append(buf, n);
-    std::fclose(f);
-  }
-  fs::remove(errfile);
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, err};
-}
-
-std::string tmpdir(const std::string& name) {
-  const fs::path p =
-      fs::temp_directory_path() / ("lbdem_test_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  return p.string();
-}
+using lbdem::test::cli;
+using lbdem::test::read_text;
+using lbdem::test::tmpdir;
 
 // A short, small version of the default preset.
 // The beads start near the floor, so the checkpoint falls in the middle of collisions and carries
@@ -122,7 +95,7 @@ TEST_CASE("SIGTERM writes a checkpoint and the resumed run equals an uninterrupt
       std::string(LBDEM_CLI) + " run box --out " + part + args +
       " --no-plots > /dev/null 2>&1 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; exit $?";
   const int rc = std::system(cmd.c_str());  // /bin/sh: background job, signal, wait for its status
-  const Result r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ""};
+  const lbdem::test::CliResult r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ""};
   std::string status;
   if (FILE* f = std::fopen((part + "/status").c_str(), "r")) {
     char buf[256] = {};

@@ -15,41 +15,16 @@
 #include <unistd.h>
 
 #include "core/h5.hpp"
+#include "helpers/cli.hpp"
 #include "scenarios/common/fluid_config.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string err;
-};
-
-std::string read_text(const std::string& p) {
-  std::ifstream f(p);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-Result cli(const std::string& args) {
-  static int calls = 0;  // unique per process and call: ctest runs test processes side by side
-  const std::string errfile =
-      fs::temp_directory_path() /
-      ("lbdem_fluid_err_" + std::to_string(::getpid()) + "_" + std::to_string(calls++));
-  const std::string cmd =
-      std::string(LBDEM_CLI) + " " + args + " --no-plots > /dev/null 2> " + errfile;
-  const int rc = std::system(cmd.c_str());
-  std::string err = read_text(errfile);
-  fs::remove(errfile);
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, err};
-}
-
-std::string tmpdir(const std::string& name) {
-  const fs::path p =
-      fs::temp_directory_path() / ("lbdem_fluid_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  return p.string();
-}
+using lbdem::test::cli;
+using lbdem::test::read_text;
+using lbdem::test::tmpdir;
 
 const std::string kChannel =
     " --config " + std::string(LBDEM_SOURCE_DIR) + "/scenarios/box/presets/gas_channel.toml";
