@@ -40,13 +40,16 @@ void DemSolver::save(H5Out& f) const {
   f.attr("lost", lost_, "/dem");
   f.attr("next_id", next_id_, "/dem");
   f.attr("need_rebuild", std::int64_t(need_rebuild_), "/dem");
-  f.write("/dem/accounts", std::vector<double>{stiffness_closed_, wall_work_, wall_power_prev_,
-                                               inserted_, removed_, mass_removed_, max_radius_});
+  f.write("/dem/accounts",
+          std::vector<double>{stiffness_closed_, wall_work_, wall_power_prev_, inserted_, removed_,
+                              mass_removed_, max_radius_, external_work_, external_power_prev_,
+                              double(track_external_)});
   f.write("/dem/x", p_.x);
   f.write("/dem/v", p_.v);
   f.write("/dem/omega", p_.omega);
   f.write("/dem/force", p_.force);
   f.write("/dem/torque", p_.torque);
+  f.write("/dem/external", p_.external);
   f.write("/dem/radius", p_.radius);
   f.write("/dem/mass", p_.mass);
   f.write("/dem/inertia", p_.inertia);
@@ -91,11 +94,13 @@ void DemSolver::load(const H5In& f) {
   const auto acc = f.doubles("/dem/accounts");
   stiffness_closed_ = acc[0], wall_work_ = acc[1], wall_power_prev_ = acc[2], inserted_ = acc[3];
   removed_ = acc[4], mass_removed_ = acc[5], max_radius_ = acc[6];
+  external_work_ = acc[7], external_power_prev_ = acc[8], track_external_ = acc[9] != 0;
   p_.x = f.vec3s("/dem/x");
   p_.v = f.vec3s("/dem/v");
   p_.omega = f.vec3s("/dem/omega");
   p_.force = f.vec3s("/dem/force");
   p_.torque = f.vec3s("/dem/torque");
+  p_.external = f.vec3s("/dem/external");
   p_.radius = f.doubles("/dem/radius");
   p_.mass = f.doubles("/dem/mass");
   p_.inertia = f.doubles("/dem/inertia");

@@ -176,7 +176,7 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
   const Vec3& vk = pr.v[k];
   const Vec3& wk = pr.w[k];
   const Vec3 vh = p.v[k], wh = p.omega[k];
-  Vec3 f = p.mass[k] * s.gravity;
+  Vec3 f = p.mass[k] * s.gravity + p.external[k];
   Vec3 tq = Vec3::Zero();
   // Walls first, in entry order (sorted by wall, then triangle).
   for (std::size_t e = wc.first[k]; e < wc.first[k + 1];) {

@@ -109,6 +109,12 @@ void DemSolver::step() {
       law_);
   event_scan();
   sum_wall_loads();
+  if (track_external_) {
+    const double power = deterministic_sum(
+        p_.size(), [&](std::size_t k) { return p_.external[k].dot(p_.v[k]); }, 0.0);
+    external_work_ += 0.5 * dt * (external_power_prev_ + power);  // trapezoidal rule
+    external_power_prev_ = power;
+  }
 }
 
 template <class Table>
@@ -224,6 +230,7 @@ EnergyTotals DemSolver::energy() const {
   e.rolling = closed[3] + a[4];
   e.stiffness_change = stiffness_closed_ + a[5];
   e.wall_work = wall_work_;
+  e.external_work = external_work_;
   e.inserted = inserted_;
   e.removed = removed_;
   return e;

@@ -57,13 +57,14 @@ struct EnergyTotals {
   double kinetic_translational = 0, kinetic_rotational = 0, potential = 0, elastic = 0;
   double normal_damping = 0, tangential_damping = 0, sliding = 0, rolling = 0;
   double stiffness_change = 0, wall_work = 0, inserted = 0, removed = 0;
+  double external_work = 0;  // of ParticleArrays::external (the gas: drag, -V grad p)
 
   double kinetic() const { return kinetic_translational + kinetic_rotational; }
   double stored() const { return kinetic() + potential + elastic; }
   double dissipated() const { return normal_damping + tangential_damping + sliding + rolling; }
   /// Energy put in since the start: initial stored energy + every source.
   double injected(double stored0) const {
-    return stored0 + wall_work + stiffness_change + inserted - removed;
+    return stored0 + wall_work + external_work + stiffness_change + inserted - removed;
   }
 };
 
@@ -86,6 +87,9 @@ class DemSolver {
   const std::vector<Wall>& walls() const { return walls_; }
 
   void step();
+  /// Books the work of ParticleArrays::external in energy() from now on (the coupling calls it;
+  /// it costs one sum over the particles per step).
+  void track_external_work() { track_external_ = true; }
   double time() const { return t_; }
   std::int64_t steps() const { return step_; }
   std::int64_t rebuilds() const { return rebuilds_; }
@@ -102,7 +106,7 @@ class DemSolver {
 
   /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs
   /// change).
-  static constexpr int kCheckpointLayout = 2;
+  static constexpr int kCheckpointLayout = 3;
   void save(H5Out& out) const;
   void load(const H5In& in);
 
@@ -141,6 +145,8 @@ class DemSolver {
   // Energy sources and sinks accumulated outside the contacts.
   double stiffness_closed_ = 0, wall_work_ = 0, wall_power_prev_ = 0, inserted_ = 0, removed_ = 0;
   double mass_removed_ = 0;
+  bool track_external_ = false;
+  double external_work_ = 0, external_power_prev_ = 0;
 };
 
 }  // namespace lbdem::dem

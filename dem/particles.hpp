@@ -14,6 +14,8 @@ struct ParticleArrays {
   std::vector<Vec3> omega;      // angular velocity [rad/s]
   std::vector<Vec3> force;      // total force of the last evaluation [N]
   std::vector<Vec3> torque;     // total torque of the last evaluation [N m]
+  std::vector<Vec3> external;   // force from another phase (gas drag, -V grad p) [N], set by the
+                                // coupling between steps and held over each step; 0 otherwise
   std::vector<double> radius;   // [m]
   std::vector<double> mass;     // [kg]
   std::vector<double> inertia;  // moment of inertia 2/5 m R^2 [kg m^2]
@@ -30,6 +32,7 @@ struct ParticleArrays {
     omega.push_back(w);
     force.push_back(Vec3::Zero());
     torque.push_back(Vec3::Zero());
+    external.push_back(Vec3::Zero());
     radius.push_back(r);
     mass.push_back(m);
     inertia.push_back(0.4 * m * r * r);
@@ -41,7 +44,8 @@ struct ParticleArrays {
   template <class IndexVec>
   void permute(const IndexVec& order) {
     apply(x, order), apply(v, order), apply(omega, order), apply(force, order);
-    apply(torque, order), apply(radius, order), apply(mass, order), apply(inertia, order);
+    apply(torque, order), apply(external, order), apply(radius, order), apply(mass, order),
+        apply(inertia, order);
     apply(material, order), apply(id, order);
   }
 

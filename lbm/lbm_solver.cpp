@@ -168,6 +168,44 @@ void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha)
   alpha_[n] = alpha;
 }
 
+void LbmSolver::set_porosity_field(std::span<const double> eps, std::span<const double> alpha) {
+  const Grid& g = grid();
+  if (eps.size() != std::size_t(g.cells()) || alpha.size() != std::size_t(g.cells()))
+    throw std::invalid_argument("porosity field: " + std::to_string(eps.size()) + " and " +
+                                std::to_string(alpha.size()) + " values for " +
+                                std::to_string(g.cells()) + " cells");
+  enable_porosity();
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const Index n = g.index(x, y, z);
+        if (!flags_.fluid(n)) continue;
+        const auto c = std::size_t(g.compact_index(x, y, z));
+        if (!(eps[c] > 0 && eps[c] <= 1) || !(alpha[c] >= 0 && std::isfinite(alpha[c])))
+          throw std::invalid_argument(
+              "porosity field at cell (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
+              std::to_string(z) + "): eps = " + std::to_string(eps[c]) +
+              ", alpha = " + std::to_string(alpha[c]) + "; need 0 < eps <= 1, alpha >= 0");
+        eps_[std::size_t(n)] = eps[c];
+        alpha_[std::size_t(n)] = alpha[c];
+      }
+}
+
+void LbmSolver::set_force_field(std::span<const Vec3> force) {
+  const Grid& g = grid();
+  if (force.size() != std::size_t(g.cells()))
+    throw std::invalid_argument("force field: " + std::to_string(force.size()) + " values for " +
+                                std::to_string(g.cells()) + " cells");
+  enable_force_field();
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const auto n = std::size_t(g.index(x, y, z));
+        const Vec3& f = force[std::size_t(g.compact_index(x, y, z))];
+        for (int a = 0; a < 3; ++a) force_[std::size_t(a)][n] = f[a];
+      }
+}
+
 void LbmSolver::set_forchheimer(double beta) {
   if (!(beta >= 0 && std::isfinite(beta)))
     throw std::invalid_argument("Forchheimer coefficient must be >= 0, got " +
@@ -271,6 +309,15 @@ void LbmSolver::density(std::vector<double>& rho) const {
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
   with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, nullptr, &u); });
+}
+
+Vec3 LbmSolver::raw_momentum() const {
+  // NoForce moments: rho u = sum_q c_q f_q, with no half-force shift and no porous scaling.
+  std::vector<double> rho;
+  std::vector<Vec3> u;
+  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, &u);
+  return deterministic_sum(
+      rho.size(), [&](std::size_t i) { return Vec3(rho[i] * u[i]); }, Vec3(Vec3::Zero()));
 }
 
 double LbmSolver::total_mass() const {

@@ -22,6 +22,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -99,13 +100,19 @@ class LbmSolver {
   void set_cell_force(int x, int y, int z, const Vec3& f);
 
   /// The porous-medium form (forcing/porous.hpp, Guo & Zhao 2002): per-cell fluid fraction eps and
-  /// Darcy rate alpha = eps nu / K [1/step], 1 and 0 when first enabled; a uniform Forchheimer
+  /// Darcy drag alpha = mu eps / K [lattice units; eps nu / K per step at rho = 1], 1 and 0 when
+  /// first enabled; a uniform Forchheimer
   /// coefficient beta = eps F_eps / sqrt(K). Call initialize() after setting eps if the gas
   /// starts in motion, so that its equilibrium carries the 1/eps terms.
   void enable_porosity();
   bool has_porosity() const { return !eps_.empty(); }
   void set_cell_porosity(int x, int y, int z, double eps, double alpha = 0);
   void set_forchheimer(double beta);
+  /// Whole fields at once, over interior cells in compact order (Grid::compact_index), as the
+  /// coupling exchanges them: eps in (0, 1] and alpha >= 0 (checked; std::invalid_argument naming
+  /// the first bad cell), force density [lattice units]. Solid cells are skipped.
+  void set_porosity_field(std::span<const double> eps, std::span<const double> alpha);
+  void set_force_field(std::span<const Vec3> force);
   /// Fluid fraction over interior cells in compact order (1 without porosity, 0 in solids).
   void porosity(std::vector<double>& eps) const;
 
@@ -125,6 +132,11 @@ class LbmSolver {
   void velocity(std::vector<Vec3>& u) const;
   /// Sum of rho over fluid cells, bitwise independent of the thread count.
   double total_mass() const;
+  /// Sum over fluid cells of sum_q c_q f_q, the momentum before the half-force shift [lattice
+  /// units]: a step adds exactly the sum of the cell forces (and the wall and open-boundary
+  /// exchanges) to it, so it is the gas's half of a momentum balance that closes to round-off.
+  /// Bitwise independent of the thread count.
+  Vec3 raw_momentum() const;
 
  private:
   struct Body {

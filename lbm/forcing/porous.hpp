@@ -11,14 +11,20 @@
 //   f_q^eq = w_q rho [1 + c.u/c_s^2 + (c.u)^2/(2 eps c_s^4) - u^2/(2 eps c_s^2)],
 //   S_q    = w_q (1 - omega/2) [c.F/c_s^2 + (u F : (c c - c_s^2 I))/(eps c_s^4)],
 //   rho = sum f_q,  u = v / (c0 + sqrt(c0^2 + c1 |v|)),  v = (sum c_q f_q + G/2) / rho,
-//   c0 = (1 + alpha/2)/2,  c1 = beta/2,  alpha = eps nu / K,  beta = eps F_eps / sqrt K,
+//   c0 = (1 + alpha/(2 rho))/2,  c1 = beta/2,  F = G - (alpha + rho beta |u|) u,
 // i.e. the linear (Darcy) and quadratic (Forchheimer) drag are taken at the new velocity
-// (semi-implicit), which keeps a stiff drag (alpha >> 1, a packed bed) stable. The operators apply
-// 1/eps through CellMoments::inv_eps; this policy supplies it, u and the total force F.
+// (semi-implicit), which keeps a stiff drag (alpha >> rho, a packed bed) stable. alpha is the
+// Darcy drag per unit volume and velocity, mu eps / K in lattice units (GZ's rho eps nu / K; the
+// two agree at rho = 1): a drag coefficient rather than a rate, so that a caller that sets it from
+// particle drag (coupling/) knows the force the gas feels exactly, whatever rho does. The
+// operators apply 1/eps through CellMoments::inv_eps; this policy supplies it, u and the total
+// force F.
 // Left out, as in GZ: d(eps)/dt in the mass balance (eps is frozen during a step, so a moving bed
 // does not displace gas by itself), the grad(eps) terms of the averaged viscous stress (nu_e lap u
-// on the superficial velocity), and the pressure enters as grad(eps p) with p = rho c_s^2 / eps, so
-// a quiescent gas across a step in eps stays at rest with uniform rho.
+// on the superficial velocity). The pressure term is -grad(rho c_s^2): GZ read rho c_s^2 as eps p,
+// so that a quiescent gas across a step in eps stays at rest with uniform rho; the fluid-particle
+// coupling reads it as the gas pressure p itself and passes the rest of the averaged pressure
+// term, (1 - eps) grad p, through the particles (coupling/coupler.hpp).
 #include "core/types.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/d3q19.hpp"
@@ -33,14 +39,14 @@ struct PorousMedium {
   static constexpr bool kActive = true;
   Base applied;
   const double* eps;    // fluid fraction per storage cell, 0 < eps <= 1
-  const double* alpha;  // Darcy rate eps nu / K per storage cell [1/step], >= 0
+  const double* alpha;  // Darcy drag mu eps / K per storage cell [lattice units], >= 0
   double beta = 0;      // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
 
   CellForce at(Index n) const { return applied.at(n); }
   CellMoments moments(const double (&f)[kQ], Index n, CellForce& force) const {
     const CellForce g = applied.at(n);
     CellMoments m = cell_moments<true>(f, g);  // u = v here
-    const double a = alpha[n];
+    const double a = alpha[n] / m.rho;         // GZ's rate eps nu / K
     const double c0 = 0.5 * (1.0 + 0.5 * a), c1 = 0.5 * beta;
     const double v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
     const double scale = 1.0 / (c0 + std::sqrt(c0 * c0 + c1 * v));

@@ -1,0 +1,148 @@
+#include "coupling/coupler.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/deterministic_sum.hpp"
+#include "coupling/drag/coarse_grain_drag.hpp"
+#include "lbm/d3q19.hpp"
+
+namespace lbdem::coupling {
+
+Coupler::Coupler(lbm::LbmSolver& gas, const lbm::LatticeFrame& frame,
+                 const lbm::LatticeUnits& units, CouplerSettings s)
+    : gas_(gas),
+      units_(units),
+      s_(s),
+      kernel_(gas.grid(), frame, s.kernel_width, ParticleKernel::solid_mask(gas.flags())) {
+  if (!(s_.size_factor >= 1)) throw std::invalid_argument("coupling: size factor must be >= 1");
+  if (!(s_.viscosity > 0)) throw std::invalid_argument("coupling: gas viscosity must be > 0");
+  if (!(s_.eps_min > 0 && s_.eps_min < 1))
+    throw std::invalid_argument("coupling: eps_min must lie in (0, 1)");
+  const auto n = std::size_t(gas.grid().cells());
+  eps_.assign(n, 1.0);
+  alpha_.assign(n, 0.0);
+  if (s_.two_way) {
+    gas_.enable_porosity();
+    gas_.enable_force_field();
+  }
+}
+
+void Coupler::pressure(std::vector<double>& p) const {
+  gas_.density(p);
+  const std::vector<std::uint8_t> solid = ParticleKernel::solid_mask(gas_.flags());
+  for (std::size_t c = 0; c < p.size(); ++c)
+    p[c] = solid[c] ? 0.0 : units_.pressure_to_si((p[c] - 1.0) * lbm::kCs2);
+}
+
+Vec3 Coupler::gas_momentum() const {
+  const double per = units_.rho * units_.dx * units_.dx * units_.dx * units_.dx / units_.dt;
+  return per * gas_.raw_momentum();
+}
+
+void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
+  if (gas_steps < 1) throw std::invalid_argument("coupling: an interval needs >= 1 gas step");
+  steps_ = gas_steps;
+  steps_done_ = 0;
+  const std::size_t np = p.size();
+  report_ = ExchangeReport{};
+  kernel_.locate(p.x);
+  report_.unmapped = kernel_.unmapped_count();
+
+  // Gas fraction, and the gas's intrinsic velocity now (for the slip that sets beta_p): the
+  // superficial velocity over the eps the gas last stepped with.
+  report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
+  gas_.velocity(cell_vec_);
+  if (s_.two_way)
+    for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
+  eps_.swap(cell_scalar_);
+  const double to_si = units_.velocity_to_si(1.0);
+  kernel_.interpolate(eps_, eps_p_);
+  kernel_.interpolate(cell_vec_, u_p_);
+
+  // Drag coefficients (the law of one original times l^3, coarse_grain_drag.hpp), held over the
+  // interval, and the particle velocities they act on.
+  beta_.resize(np);
+  v_p_.assign(p.v.begin(), p.v.end());
+  const double mu = s_.viscosity, rho_f = units_.rho;
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < np; ++k) {
+          const DragInput in{rho_f, mu, std::clamp(eps_p_[k], s_.eps_min, 1.0), 2 * p.radius[k]};
+          const double slip = (to_si * u_p_[k] - v_p_[k]).norm();
+          beta_[k] = parcel_drag_coefficient(law, in, s_.size_factor, slip);
+        }
+      },
+      s_.drag);
+  double rate = 0, eps_sum = 0;
+  for (std::size_t k = 0; k < np; ++k) {
+    rate = std::max(rate, beta_[k] * steps_ * units_.dt / p.mass[k]);
+    eps_sum += eps_p_[k];
+  }
+  report_.max_particle_rate = rate;
+  report_.mean_eps_particles = np ? eps_sum / double(np) : 1.0;
+
+  // Pressure-gradient force -V_p grad p, interpolated with the same kernel.
+  f_grad_.assign(np, Vec3::Zero());
+  if (s_.pressure_gradient) {
+    std::vector<double> pr;
+    pressure(pr);
+    kernel_.pressure_gradient(pr, cell_vec_);
+    kernel_.interpolate(cell_vec_, f_grad_);
+    for (std::size_t k = 0; k < np; ++k)
+      f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);
+  }
+  report_.pressure_force = deterministic_sum(
+      np, [&](std::size_t k) { return f_grad_[k]; }, Vec3(Vec3::Zero()));
+  acc_.assign(np, Vec3::Zero());
+  if (!s_.two_way) return;
+
+  // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
+  // explicit rest, sum_p (beta_p v_p - F_gradp,p) K_p / dx^3 - (1 - eps) rho_f g (see the header).
+  kernel_.deposit(beta_, cell_scalar_);  // A_c [kg/(m^3 s)]
+  work_.resize(np);
+  for (std::size_t k = 0; k < np; ++k) work_[k] = beta_[k] * v_p_[k] - f_grad_[k];
+  kernel_.deposit(work_, cell_vec_);
+  const double drag_to_lattice = units_.dt / units_.rho;  // (A / eps) [SI] -> alpha [lattice]
+  const double force_to_lattice = units_.force_density_to_lattice(1.0);
+  force_lat_.resize(cell_vec_.size());
+  for (std::size_t c = 0; c < eps_.size(); ++c) {
+    alpha_[c] = cell_scalar_[c] / eps_[c] * drag_to_lattice;
+    force_lat_[c] = force_to_lattice * (cell_vec_[c] - (1 - eps_[c]) * s_.gas_weight);
+  }
+  gas_.set_porosity_field(eps_, alpha_);
+  gas_.set_force_field(force_lat_);
+}
+
+void Coupler::before_gas_step() {
+  if (steps_done_ >= steps_)
+    throw std::logic_error("coupling: more gas steps than begin_interval announced");
+  ++steps_done_;
+  // The velocity this step's collision uses (the fields are those begin_interval set), so the
+  // drag each particle gets is exactly the one the gas loses in the step.
+  gas_.velocity(cell_vec_);
+  if (s_.two_way)
+    for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
+  kernel_.interpolate(cell_vec_, u_p_);
+  const double to_si = units_.velocity_to_si(1.0);
+  for (std::size_t k = 0; k < acc_.size(); ++k) acc_[k] += beta_[k] * (to_si * u_p_[k] - v_p_[k]);
+}
+
+const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
+  if (steps_done_ != steps_)
+    throw std::logic_error("coupling: end_interval after " + std::to_string(steps_done_) + " of " +
+                           std::to_string(steps_) + " gas steps");
+  if (p.size() != acc_.size())
+    throw std::logic_error("coupling: the particles changed during an exchange interval");
+  const double inv = 1.0 / steps_;
+  for (std::size_t k = 0; k < acc_.size(); ++k) {
+    acc_[k] *= inv;
+    p.external[k] = acc_[k] + f_grad_[k];
+  }
+  report_.drag = deterministic_sum(
+      acc_.size(), [&](std::size_t k) { return acc_[k]; }, Vec3(Vec3::Zero()));
+  return report_;
+}
+
+}  // namespace lbdem::coupling

@@ -1,0 +1,305 @@
+// The two-way gas-particle exchange (coupling/coupler.hpp) against references: the Schiller-Naumann
+// terminal velocity of a settling sphere (one-way, originals and coarse-grained parcels), momentum
+// of gas + particles to round-off, the self-induced slip error against the kernel width
+// (two-way), and the Ergun pressure drop of a fixed packed bed with the Gidaspow law.
+#include <catch2/catch.hpp>
+
+#include "coupling/coupler.hpp"
+#include "dem/dem_solver.hpp"
+#include "helpers/dem_setup.hpp"
+#include "lbm/collision/trt.hpp"
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace lbdem;
+using namespace lbdem::coupling;
+
+namespace {
+
+constexpr double kRhoGas = 1.2, kMuGas = 1.8e-5;  // air at 20 C [kg/m^3], [Pa s]
+
+// Gas + particles + coupler in an n^3 (or nx ny nz) box whose lower corner is the SI origin.
+struct Rig {
+  lbm::LatticeUnits units;
+  lbm::LatticeFrame frame;
+  std::unique_ptr<lbm::LbmSolver> gas;
+  std::unique_ptr<dem::DemSolver> dem;
+  std::unique_ptr<Coupler> coupler;
+  int dem_per_interval = 1, gas_per_interval = 1;
+
+  Rig(std::array<int, 3> cells, double dx, double dt_gas, lbm::BoxFaces faces, dem::DemSettings ds,
+      dem::Material mat) {
+    units = {dx, dt_gas, kRhoGas};
+    frame = {Vec3::Zero(), dx};
+    lbm::LbmSettings ls;
+    ls.nx = cells[0], ls.ny = cells[1], ls.nz = cells[2];
+    ls.faces = faces;
+    const double nu_lat = units.viscosity_to_lattice(kMuGas / kRhoGas);
+    ls.collision = lbm::Trt::from_tau(0.5 + 3 * nu_lat);
+    gas = std::make_unique<lbm::LbmSolver>(ls);
+    gas->initialize([](int, int, int, double& rho, Vec3& u) { rho = 1, u = Vec3::Zero(); });
+    ds.domain.lo = Vec3::Zero();
+    ds.domain.hi = Vec3(cells[0], cells[1], cells[2]) * dx;
+    dem = std::make_unique<dem::DemSolver>(ds, std::vector<dem::Material>{mat});
+  }
+  void couple(CouplerSettings cs) {
+    cs.viscosity = kMuGas;
+    coupler = std::make_unique<Coupler>(*gas, frame, units, cs);
+    dem->track_external_work();
+  }
+  // One exchange interval: the gas steps first, then the DEM (scenarios do the same).
+  void interval() {
+    coupler->begin_interval(dem->particles(), gas_per_interval);
+    for (int k = 0; k < gas_per_interval; ++k) {
+      coupler->before_gas_step();
+      gas->step();
+    }
+    coupler->end_interval(dem->particles());
+    for (int k = 0; k < dem_per_interval; ++k) dem->step();
+  }
+  // Momentum of gas and particles at the half step (see the momentum test).
+  Vec3 momentum() const {
+    const auto& p = dem->particles();
+    const double h = 0.5 * dem->settings().dt;
+    Vec3 m = coupler->gas_momentum();
+    for (std::size_t k = 0; k < p.size(); ++k) m += p.mass[k] * p.v[k] + h * p.force[k];
+    return m;
+  }
+};
+
+dem::Material powder(double density) {
+  dem::Material m = test::glass();
+  m.density = density;
+  m.stiffness = 1e-2;
+  return m;
+}
+
+// Schiller-Naumann terminal velocity, written out here from the correlation (Schiller & Naumann
+// 1933; Clift, Grace & Weber 1978, Table 5.2): 3 pi mu d v (1 + 0.15 Re^0.687) = F, by bisection.
+double sn_terminal_velocity(double d, double force) {
+  double lo = 0, hi = force / (3 * kPi * kMuGas * d);  // the Stokes value bounds it from above
+  for (int it = 0; it < 200; ++it) {
+    const double v = 0.5 * (lo + hi), re = kRhoGas * v * d / kMuGas;
+    (3 * kPi * kMuGas * d * v * (1 + 0.15 * std::pow(re, 0.687)) < force ? lo : hi) = v;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+TEST_CASE("one-way settling reaches the Schiller-Naumann terminal velocity, parcels too",
+          "[coupling][physics]") {
+  // A sphere in a gas at rest (no gas weight, so no buoyancy: the balance is m g = F_d). Steady
+  // state is a fixed point of the exchange, so the only errors are the remaining transient
+  // (20 response times: e^-20) and round-off; 0.5 % is the issue's tolerance. A parcel of l^3
+  // originals (diameter l d) is dragged as l^3 originals, so it settles at the original's speed.
+  struct Case {
+    double re, d, dx, dt;
+  };
+  const Case cases[] = {{0.1, 50e-6, 1e-4, 1.1e-4}, {10, 300e-6, 1e-3, 2e-3}};
+  for (const Case& c : cases) {
+    // The particle density that gives Re at terminal velocity (Schiller-Naumann, g = 9.81).
+    const double v_target = c.re * kMuGas / (kRhoGas * c.d);
+    const double drag = 3 * kPi * kMuGas * c.d * v_target * (1 + 0.15 * std::pow(c.re, 0.687));
+    const double g = 9.81, vol = kPi * c.d * c.d * c.d / 6, rho_p = drag / (vol * g);
+    const double v_t = sn_terminal_velocity(c.d, rho_p * vol * g);
+    const double tau_p = v_t / g;  // response time of the drag law at terminal velocity (upper)
+    for (int l = 1; l <= 3; ++l) {
+      CAPTURE(c.re, l, v_t);
+      auto ds = test::settings(c.dt, Vec3(0, 0, -g));
+      ds.domain.periodic = {true, true, true};
+      ds.skin = c.d;
+      Rig rig({8, 8, 8}, c.dx, c.dt, lbm::BoxFaces::all_periodic(), ds, powder(rho_p));
+      CouplerSettings cs;
+      cs.two_way = false;
+      cs.drag = SchillerNaumann{};
+      cs.size_factor = l;
+      cs.kernel_width = default_kernel_width(c.dx, l * c.d);
+      rig.couple(cs);
+      rig.dem->add_particle(Vec3(4, 4, 4) * c.dx, Vec3::Zero(), 0.5 * l * c.d, 0);
+      const int steps = int(std::ceil(20 * tau_p / c.dt));
+      for (int k = 0; k < steps; ++k) rig.interval();
+      const double v = -rig.dem->particles().v[0].z();
+      CHECK(v == Approx(v_t).epsilon(0.005));
+      CHECK(std::abs(v / v_t - 1) < 1e-6);  // what the fixed point gives: e^-20 and round-off
+    }
+  }
+}
+
+TEST_CASE("two-way exchange conserves gas + particle momentum to round-off",
+          "[coupling][physics]") {
+  // Periodic gas at rest, 40 particles moving at random, no gravity: nothing outside acts, so
+  // the momentum of gas and particles stays what it was. Measured at the half step on both sides:
+  // particles sum m v + dt/2 F (velocity Verlet), gas sum c f (before Guo's half-force shift);
+  // each step adds exactly dt F to either, and the exchange gives them opposite impulses. The
+  // test sub-cycles 4 DEM steps per gas step and exchanges every 2 gas steps (8 DEM steps), with
+  // the pressure-gradient force on, so every path of the exchange is crossed. Tolerance 1e-12 of
+  // the particles' momentum scale: a few hundred steps of sums of O(50) terms at 1e-16 each.
+  const double dx = 1e-4, dt_gas = 2e-5;
+  auto ds = test::settings(dt_gas / 4);
+  ds.domain.periodic = {true, true, true};
+  ds.skin = 2e-5;
+  Rig rig({12, 12, 12}, dx, dt_gas, lbm::BoxFaces::all_periodic(), ds, powder(1500));
+  rig.dem_per_interval = 8;
+  rig.gas_per_interval = 2;
+  CouplerSettings cs;
+  cs.drag = Gidaspow{};
+  cs.kernel_width = default_kernel_width(dx, 100e-6);
+  rig.couple(cs);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double scale = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < 2; ++k) {
+        const Vec3 x = Vec3(0.15 + 0.25 * i, 0.1 + 0.2 * j, 0.25 + 0.5 * k) * 12 * dx;
+        const Vec3 v = 0.05 * Vec3(u(rng), u(rng), u(rng));
+        rig.dem->add_particle(x + 0.05 * dx * Vec3(u(rng), u(rng), u(rng)), v, 50e-6, 0);
+      }
+  for (std::size_t k = 0; k < rig.dem->particles().size(); ++k)
+    scale += rig.dem->particles().mass[k] * rig.dem->particles().v[k].norm();
+  const Vec3 p0 = rig.momentum();
+  for (int n = 0; n < 50; ++n) {
+    rig.interval();
+  }
+  const Vec3 p1 = rig.momentum();
+  CAPTURE(p0.transpose(), p1.transpose(), scale);
+  CHECK((p1 - p0).norm() < 1e-12 * scale);
+  // And the exchange did something: over 2 ms, 4 % of the particles' response time
+  // rho_p d^2 / (18 mu) = 46 ms, the gas takes about 4 % of their momentum.
+  CHECK(rig.coupler->gas_momentum().norm() > 0.02 * p0.norm());
+}
+
+TEST_CASE("two-way settling: the self-induced slip error falls as the kernel widens",
+          "[coupling][physics][slow]") {
+  // A sphere settles in a periodic box; a uniform upward force on the gas carries the particle's
+  // weight, so nothing outside acts and the gas far away stays at its (small) mean velocity. The
+  // particle's own reaction drags the gas where it sits along with it, so the drag law, which
+  // sees that local gas, lets it fall faster than the Schiller-Naumann speed against the gas far
+  // away: by about 0.28 d / sigma (force coupling, Maxey & Patel 2001; kernel.hpp), less the
+  // periodic images' hindrance (Hasimoto 1959: about 1.76 (d/2) / L, 5.5 % in this box). No fixed
+  // tolerance holds for that error (the issue); the test asks that it falls as sigma / d grows,
+  // and that the self-induced part (error + image term) is 0.28 d / sigma within a factor 1.5.
+  const double d = 50e-6, dx = 50e-6, nu_lat = 1.0 / 6;  // tau = 1
+  const double dt = nu_lat * dx * dx / (kMuGas / kRhoGas);
+  const double re = 0.1, v_t = re * kMuGas / (kRhoGas * d);
+  const double tau_p = 100 * dt, g = v_t / tau_p * (1 + 0.15 * std::pow(re, 0.687));
+  const double vol = kPi * d * d * d / 6;
+  const double rho_p = 3 * kPi * kMuGas * d * v_t * (1 + 0.15 * std::pow(re, 0.687)) / (vol * g);
+  const int n = 16;
+  const double widths[] = {1, 2, 4};  // sigma / d
+  double previous = 1e300;
+  for (double w : widths) {
+    auto ds = test::settings(dt, Vec3(0, 0, -g));
+    ds.domain.periodic = {true, true, true};
+    ds.skin = d;
+    Rig rig({n, n, n}, dx, dt, lbm::BoxFaces::all_periodic(), ds, powder(rho_p));
+    CouplerSettings cs;
+    cs.drag = SchillerNaumann{};
+    cs.kernel_width = w * d;
+    rig.couple(cs);
+    rig.dem->add_particle(Vec3(n / 2.0, n / 2.0, n / 2.0) * dx, Vec3::Zero(), d / 2, 0);
+    const double m = rig.dem->particles().mass[0], box = std::pow(n * dx, 3);
+    rig.gas->set_body_force(Vec3(0, 0, rig.units.force_density_to_lattice(m * g / box)));
+    // 15 response times of the particle, and the box's viscous time L^2 / nu = 1536 steps.
+    const int steps = 1500;
+    double slip = 0;
+    int samples = 0;
+    for (int k = 0; k < steps; ++k) {
+      rig.interval();
+      if (k >= steps - 300) {
+        const Vec3 u_mean = rig.coupler->gas_momentum() / (kRhoGas * box);
+        slip += u_mean.z() - rig.dem->particles().v[0].z();
+        ++samples;
+      }
+    }
+    slip /= samples;
+    const double error = slip / v_t - 1, image = 1.76 * (d / 2) / (n * dx);
+    const double self = error + image, estimate = 0.28 / w;
+    WARN("two-way settling, sigma/d = " << w << ": slip " << slip << " m/s, " << 100 * error
+                                        << " % above Schiller-Naumann; self-induced part "
+                                        << 100 * self << " % (force coupling: " << 100 * estimate
+                                        << " %)");
+    CHECK(std::abs(error) < previous);
+    CHECK(self / estimate > 1 / 1.5);
+    CHECK(self / estimate < 1.5);
+    previous = std::abs(error);
+  }
+}
+
+TEST_CASE("fixed packed bed with the Gidaspow law gives the Ergun pressure drop",
+          "[coupling][physics][slow]") {
+  // Spheres on a body-centred cubic lattice (solid fraction 0.6, eps = 0.4; nearest neighbours
+  // 1.04 d apart) held in place, gas entering at U through the bottom and leaving at the top,
+  // periodic sides. Below eps = 0.8 the Gidaspow law is Ergun's equation per particle, so the
+  // drop across the bed interior must be Ergun's, dp/L = 150 mu (1-eps)^2 U / (eps^3 d^2) +
+  // 1.75 rho (1-eps) U^2 / (eps^3 d) (Ergun 1952), through the set II split (drag = eps x the
+  // total force, coupler.hpp). Tolerance 5 % (the issue's): the kernel smooths the lattice of
+  // spheres to eps within about 1 % in the interior, and the pressure gradient is read over a
+  // section 2 kernel widths inside the bed. (Wen-Yu alone would sit about 10 % below Ergun at
+  // eps = 0.4: its voidage function is fitted to expanded beds.)
+  // BCC cell a holds 2 spheres: 2 pi d^3 / 6 = 0.6 a^3.
+  const double a = 120e-6, dx = a / 3, d = a * std::cbrt(1.8 / kPi);
+  const double eps = 0.4, u_in = 0.05, dt = 5e-8;
+  const int nxy = 6, nz = 90, bed_cells = 20;  // bed: 20 BCC cells high, from z = 15 dx
+  lbm::BoxFaces faces;
+  faces[4].kind = lbm::FaceKind::inlet;
+  faces[4].wall_velocity = Vec3(0, 0, u_in * dt / dx);
+  faces[5].kind = lbm::FaceKind::outlet;
+  auto ds = test::settings(dt);
+  ds.domain.periodic = {true, true, false};
+  ds.skin = 0.1 * d;
+  Rig rig({nxy, nxy, nz}, dx, dt, faces, ds, powder(1500));
+  CouplerSettings cs;
+  cs.drag = Gidaspow{};
+  cs.kernel_width = d;  // narrower than the default 2 d: a bed 20 diameters high keeps an interior
+  rig.couple(cs);
+  const double z0 = 15 * dx;
+  for (int k = 0; k < bed_cells; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const Vec3 corner(i * a, j * a, z0 + k * a);
+        rig.dem->add_particle(corner + Vec3(0.25, 0.25, 0.25) * a, Vec3::Zero(), d / 2, 0);
+        rig.dem->add_particle(corner + Vec3(0.75, 0.75, 0.75) * a, Vec3::Zero(), d / 2, 0);
+      }
+  // The particles stay put: only the exchange and the gas run. The pressure settles diffusively
+  // (Darcy flow: diffusivity c_s^2 rho eps / A = 13 cells^2 per step here), 3000 steps are about
+  // ten diffusion times of the 60-cell bed; the test checks the mass flow is steady.
+  for (int k = 0; k < 3000; ++k) {
+    rig.coupler->begin_interval(rig.dem->particles(), 1);
+    rig.coupler->before_gas_step();
+    rig.gas->step();
+    rig.coupler->end_interval(rig.dem->particles());
+  }
+  std::vector<double> p;
+  rig.coupler->pressure(p);
+  const auto plane = [&](int z, const std::vector<double>& f) {
+    double s = 0;
+    for (int y = 0; y < nxy; ++y)
+      for (int x = 0; x < nxy; ++x) s += f[std::size_t(rig.gas->grid().compact_index(x, y, z))];
+    return s / (nxy * nxy);
+  };
+  // The triweight reaches 3 sigma (kernel.hpp): planes farther than that from the bed's faces see
+  // only interior particles.
+  const int margin = int(std::ceil(rig.coupler->kernel().support_radius() / dx)) + 1;
+  const int za = 15 + margin, zb = 15 + bed_cells * 3 - margin;
+  REQUIRE(zb - za >= 10);
+  const double grad = (plane(za, p) - plane(zb, p)) / ((zb - za) * dx);
+  const double ergun = 150 * kMuGas * (1 - eps) * (1 - eps) * u_in / (eps * eps * eps * d * d) +
+                       1.75 * kRhoGas * (1 - eps) * u_in * u_in / (eps * eps * eps * d);
+  double eps_bed = 0;
+  for (int z = za; z <= zb; ++z) eps_bed += plane(z, rig.coupler->eps()) / (zb - za + 1);
+  std::vector<Vec3> u;
+  std::vector<double> rho, flux(p.size());
+  rig.gas->velocity(u);
+  rig.gas->density(rho);
+  for (std::size_t c = 0; c < flux.size(); ++c) flux[c] = rho[c] * u[c].z() * dx / dt;
+  CAPTURE(grad, ergun, eps_bed, d, za, zb);
+  // Steady: the superficial mass flux in the bed and above it is the inflow rho U (0.1 %).
+  CHECK(plane(za, flux) == Approx(u_in).epsilon(1e-3));
+  CHECK(plane(nz - 2, flux) == Approx(u_in).epsilon(1e-3));
+  CHECK(eps_bed == Approx(eps).epsilon(0.01));
+  CHECK(grad == Approx(ergun).epsilon(0.05));
+}
