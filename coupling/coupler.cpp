@@ -58,8 +58,10 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
     for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
   eps_.swap(cell_scalar_);
   const double to_si = units_.velocity_to_si(1.0);
-  kernel_.interpolate(eps_, eps_p_);
-  kernel_.interpolate(cell_vec_, u_p_);
+  // eps and the slip that sets beta_p only need local values: the filtered eps is already smooth,
+  // and the exchange stays exact whatever velocity beta_p was evaluated at.
+  kernel_.interpolate_local(eps_, eps_p_);
+  kernel_.interpolate_local(cell_vec_, u_p_);
 
   // Drag coefficients (the law of one original times l^3, coarse_grain_drag.hpp), held over the
   // interval, and the particle velocities they act on.
@@ -89,13 +91,13 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
     std::vector<double> pr;
     pressure(pr);
     kernel_.pressure_gradient(pr, cell_vec_);
-    kernel_.interpolate(cell_vec_, f_grad_);
+    kernel_.interpolate_local(cell_vec_, f_grad_);  // any force the gas gets back exactly
     for (std::size_t k = 0; k < np; ++k)
       f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);
   }
   report_.pressure_force = deterministic_sum(
       np, [&](std::size_t k) { return f_grad_[k]; }, Vec3(Vec3::Zero()));
-  acc_.assign(np, Vec3::Zero());
+  u_sum_.assign(cell_vec_.size(), Vec3::Zero());
   if (!s_.two_way) return;
 
   // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
@@ -119,25 +121,28 @@ void Coupler::before_gas_step() {
   if (steps_done_ >= steps_)
     throw std::logic_error("coupling: more gas steps than begin_interval announced");
   ++steps_done_;
-  // The velocity this step's collision uses (the fields are those begin_interval set), so the
-  // drag each particle gets is exactly the one the gas loses in the step.
+  // The velocity this step's collision uses (the fields are those begin_interval set), summed
+  // over the interval: interpolation is linear, so the mean drag each particle gets at the end is
+  // exactly what the gas lost over the steps.
   gas_.velocity(cell_vec_);
   if (s_.two_way)
-    for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
-  kernel_.interpolate(cell_vec_, u_p_);
-  const double to_si = units_.velocity_to_si(1.0);
-  for (std::size_t k = 0; k < acc_.size(); ++k) acc_[k] += beta_[k] * (to_si * u_p_[k] - v_p_[k]);
+    for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c] / eps_[c];
+  else
+    for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c];
 }
 
 const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
   if (steps_done_ != steps_)
     throw std::logic_error("coupling: end_interval after " + std::to_string(steps_done_) + " of " +
                            std::to_string(steps_) + " gas steps");
-  if (p.size() != acc_.size())
+  if (p.size() != beta_.size())
     throw std::logic_error("coupling: the particles changed during an exchange interval");
   const double inv = 1.0 / steps_;
+  kernel_.interpolate(u_sum_, u_p_);
+  const double to_si = units_.velocity_to_si(1.0) * inv;
+  acc_.resize(p.size());
   for (std::size_t k = 0; k < acc_.size(); ++k) {
-    acc_[k] *= inv;
+    acc_[k] = beta_[k] * (to_si * u_p_[k] - v_p_[k]);
     p.external[k] = acc_[k] + f_grad_[k];
   }
   report_.drag = deterministic_sum(

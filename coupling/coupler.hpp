@@ -26,9 +26,9 @@
 // implicit (semi-implicit GZ form: the cell's drag coefficient A_c / eps_c multiplies the new
 // velocity), because the drag relaxes a light gas in a dense bed within microseconds
 // (rho_f eps / beta_vol = 2 us for 100 um particles at eps = 0.4), shorter than the gas step.
-// Before each gas step, before_gas_step() reads the velocity that step's collision will use and
-// gives each particle its share, beta_p (K_p * (u / eps) - v_p); end_interval() sets the
-// particles' external force to the interval's mean, which the DEM then holds over its steps.
+// Before each gas step, before_gas_step() adds up the velocity that step's collision will use;
+// end_interval() gives each particle beta_p (K_p * mean(u / eps) - v_p), the interval's mean of
+// what the gas lost to it in each step, and the DEM holds that force over its steps.
 // Gas and particles receive equal and opposite impulses over the interval to round-off.
 // The particle side is explicit: beta_p dt_interval / m_p must stay well below 1 (the banner says;
 // it is 5e-4 for 100 um particles in air at a 2 us interval).
@@ -101,7 +101,7 @@ class Coupler {
   ParticleKernel kernel_;
   int steps_ = 0, steps_done_ = 0;
   std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_;
-  std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_;
+  std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_;
   ExchangeReport report_;
 };
 

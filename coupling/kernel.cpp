@@ -96,7 +96,8 @@ std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags
 
 void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out,
                                  int axis) const {
-  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz();
+  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz(), h = half_;
+  const bool wrap_x = grid_.periodic(0);
   out.resize(in.size());
   const auto& list = tap_list_[std::size_t(axis)];
 #pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
@@ -104,11 +105,25 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
     for (int y = 0; y < ny; ++y) {
       double* o = out.data() + cell(0, y, z);
       if (axis == 0) {
+        // The row with H cells of halo on each side (wrapped, or zero beyond a non-periodic face:
+        // the taps there are the ones the tap list leaves out), so that each tap is one
+        // contiguous, vectorisable sweep; taps are added in the same order, k = -H..H.
+        thread_local std::vector<double> pad;
+        pad.resize(std::size_t(nx + 2 * h));
         const double* row = in.data() + cell(0, y, z);
-        for (int x = 0; x < nx; ++x) {
-          double s = 0;
-          for (const Tap& t : list[std::size_t(x)]) s += t.g * row[t.j];
-          o[x] = s;
+        for (int i = -h; i < nx + h; ++i) {
+          double v = 0;
+          if (wrap_x)
+            v = row[((i % nx) + nx) % nx];
+          else if (i >= 0 && i < nx)
+            v = row[i];
+          pad[std::size_t(i + h)] = v;
+        }
+        for (int x = 0; x < nx; ++x) o[x] = 0;
+        for (int k = -h; k <= h; ++k) {
+          const double g = taps_[std::size_t(std::abs(k))];
+          const double* src = pad.data() + h + k;
+          for (int x = 0; x < nx; ++x) o[x] += g * src[x];
         }
       } else {
         // Rows along y or z: accumulate whole x rows so that the inner loop is contiguous.
@@ -262,6 +277,42 @@ void ParticleKernel::sample(const std::array<std::vector<double>, 3>& v, double*
     }
     for (int a = 0; a < NC; ++a) out[std::size_t(bin_items_[k]) * NC + std::size_t(a)] = s[a];
   }
+}
+
+template <int NC>
+void ParticleKernel::sample_local(const double* field, double* out) const {
+  const std::size_t np = particle_count();
+#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  for (std::size_t k = 0; k < np; ++k) {
+    double s[NC] = {}, sw = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const double w = weight_[k][std::size_t(corner)];
+      if (w == 0) continue;
+      int q[3];
+      for (int a = 0; a < 3; ++a) {
+        q[a] = base_[k][std::size_t(a)] + ((corner >> a) & 1);
+        if (q[a] == grid_.extent(a)) q[a] = 0;
+      }
+      const auto c = std::size_t(cell(q[0], q[1], q[2]));
+      for (int a = 0; a < NC; ++a) s[a] += w * field[c * NC + std::size_t(a)];
+      sw += w;
+    }
+    const double inv = sw > 0 ? 1.0 / sw : 0.0;
+    for (int a = 0; a < NC; ++a) out[std::size_t(bin_items_[k]) * NC + std::size_t(a)] = s[a] * inv;
+  }
+}
+
+void ParticleKernel::interpolate_local(std::span<const double> field,
+                                       std::vector<double>& out) const {
+  require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
+  out.resize(particle_count());
+  sample_local<1>(field.data(), out.data());
+}
+
+void ParticleKernel::interpolate_local(std::span<const Vec3> field, std::vector<Vec3>& out) const {
+  require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
+  out.resize(particle_count());
+  sample_local<3>(field.data()->data(), out.data()->data());
 }
 
 void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v) const {

@@ -129,6 +129,13 @@ class ParticleKernel {
   void interpolate(std::span<const double> field, std::vector<double>& out) const;
   void interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const;
 
+  /// Trilinear interpolation over the gas corners of each particle's cell (weights renormalised
+  /// over them), without the filter: for fields that are already smooth on the kernel's scale
+  /// (eps, grad p, the gas velocity a drag coefficient is evaluated at), where the exchange does
+  /// not need the adjoint of deposit(). Exact for constant and linear fields away from solids.
+  void interpolate_local(std::span<const double> field, std::vector<double>& out) const;
+  void interpolate_local(std::span<const Vec3> field, std::vector<Vec3>& out) const;
+
   /// grad p per gas cell [Pa/m] from the cell pressure p [Pa]: central differences, one-sided
   /// (first order) where one neighbour is solid or outside the box, 0 where both are. One-sided
   /// rather than zero-flux because the gas pressure next to a wall is not flat (hydrostatic head,
@@ -147,6 +154,9 @@ class ParticleKernel {
   // out[NC p + a] = sum_c w_c(x_p) v[a](c) over the 8 trilinear cells of each particle p.
   template <int NC>
   void sample(const std::array<std::vector<double>, 3>& v, double* out) const;
+  // As sample, from one interleaved field (NC values per cell), divided by the gas weight.
+  template <int NC>
+  void sample_local(const double* field, double* out) const;
   // v = (G * (m in)) / Z, the field each source cell reads (in is overwritten).
   void smooth(std::vector<double>& in, std::vector<double>& v) const;
   Index cell(int x, int y, int z) const { return grid_.compact_index(x, y, z); }

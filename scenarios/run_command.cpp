@@ -15,6 +15,7 @@
 #include "core/h5.hpp"
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
+#include "scenarios/fluidized_bed/fluidized_bed.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
@@ -40,6 +41,9 @@ const std::vector<ScenarioEntry>& scenarios() {
       {"box",
        "particles poured into a box and settling; faces wall/periodic/open, STL walls, inflow",
        "scenarios/box/presets/default.toml", make<BoxScenario>},
+      {"fluidized_bed",
+       "gas-fluidized bed of fine (cohesive) particles, original or coarse-grained (DESIGN 1.1)",
+       "scenarios/fluidized_bed/presets/default.toml", make<FluidizedBedScenario>},
       {"rheometer",
        "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell, DESIGN 1.2)",
        "scenarios/rheometer/presets/default.toml", make<RheometerScenario>},

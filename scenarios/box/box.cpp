@@ -217,7 +217,31 @@ BoxScenario::BoxScenario(const Config& cfg) {
       rho = fluid_.rest_density(x, y, z);
       v = u0 - lattice.body_force / (2 * rho);
     });
+    for (int f = 0; f < 6; ++f)
+      inlet_set_[std::size_t(f)] = fluid_.faces[std::size_t(f)].velocity_at(0);
   }
+  if (cfg.has("coupling")) {
+    if (!has_fluid || gas_only_)
+      throw InputError("coupling", "", has_fluid ? "no particles to couple" : "no gas to couple",
+                       has_fluid ? "add particles ([[fill]], [[particle]] or [inflow])"
+                                 : "add a [fluid] table, or remove [coupling]");
+    double r_lo = 1e300, r_hi = 0;
+    for (const auto& q : init) r_lo = std::min(r_lo, q.r), r_hi = std::max(r_hi, q.r);
+    if (inflow_.on) {
+      r_lo = std::min(r_lo, inflow_.radius.smallest());
+      r_hi = std::max(r_hi, inflow_.radius.largest());
+    }
+    coupling_ = read_coupling(cfg.section("coupling"), fluid_, 2 * r_lo, 2 * r_hi, l,
+                              mats.front().density, fluid_.weighs, s.gravity);
+    interval_ = exchange_interval(sub_, coupling_.exchange_every);
+    coupler_ = std::make_unique<coupling::Coupler>(*gas_, lbm::LatticeFrame{fluid_.lo, fluid_.dx},
+                                                   fluid_.units(), coupling_.settings);
+    solver_->track_external_work();
+  }
+}
+
+std::int64_t BoxScenario::cycle() const {
+  return coupler_ ? interval_.dem_steps : sub_.cycle();
 }
 
 void BoxScenario::banner(Log& log) const {
@@ -229,11 +253,46 @@ void BoxScenario::banner(Log& log) const {
                step_.scales.rayleigh_time, step_.scales.where);
   }
   if (gas_) fluid_banner(log, fluid_, sub_);
+  if (coupler_) {
+    std::vector<double> eps;
+    gas_->porosity(eps);
+    double cells = 0;
+    for (double e : eps) cells += e > 0 ? 1.0 : 0.0;
+    coupling_banner(log, coupling_, fluid_, sub_, solver_->particles().size(), cells);
+  }
+  if (extra_.banner) extra_.banner(log);
 }
 
-void BoxScenario::advance_gas(const dem::DemSolver& s) {
+void BoxScenario::advance_gas(dem::DemSolver& s) {
   if (!gas_) return;
-  for (int k = sub_.gas_steps_before(s.steps()); k > 0; --k) gas_->step();
+  // Ramped inlets take the velocity of the time the coming gas step starts at.
+  const auto ramp = [&] {
+    const double t = double(gas_->steps()) * fluid_.dt;
+    for (int f = 0; f < 6; ++f) {
+      const FluidFace& face = fluid_.faces[std::size_t(f)];
+      if (!face.ramped()) continue;
+      const Vec3 v = face.velocity_at(t);
+      if (v == inlet_set_[std::size_t(f)]) continue;
+      inlet_set_[std::size_t(f)] = v;
+      const Vec3 lu = v * fluid_.units().velocity_to_lattice(1.0);
+      gas_->set_wall_velocity(gas_->face_body(f), [lu](const Vec3&) { return lu; });
+    }
+  };
+  if (coupler_) {
+    if (s.steps() % interval_.dem_steps != 0) return;
+    coupler_->begin_interval(s.particles(), interval_.gas_steps);
+    for (int k = 0; k < interval_.gas_steps; ++k) {
+      ramp();
+      coupler_->before_gas_step();
+      gas_->step();
+    }
+    report_ = coupler_->end_interval(s.particles());
+    return;
+  }
+  for (int k = sub_.gas_steps_before(s.steps()); k > 0; --k) {
+    ramp();
+    gas_->step();
+  }
 }
 
 void BoxScenario::before_step(dem::DemSolver& s) {
@@ -270,35 +329,68 @@ void BoxScenario::before_step(dem::DemSolver& s) {
   }
 }
 
-int BoxScenario::run(const RunContext& ctx) {
-  DriverHooks hooks;
-  hooks.before_step = [this](dem::DemSolver& s) {
-    before_step(s);
-    advance_gas(s);
-  };
-  hooks.extra_columns = wall_columns_;
-  hooks.extra_columns.push_back("mass_inserted_kg");
+std::vector<std::string> BoxScenario::columns() const {
+  std::vector<std::string> c = wall_columns_;
+  c.push_back("mass_inserted_kg");
   if (gas_) {
     const auto cols = fluid_columns(fluid_);
-    hooks.extra_columns.insert(hooks.extra_columns.end(), cols.begin(), cols.end());
+    c.insert(c.end(), cols.begin(), cols.end());
   }
-  hooks.extra_values = [this](const dem::DemSolver& s) {
-    std::vector<double> v;
-    for (const auto& w : s.walls()) {
-      Vec3 axis = Vec3::UnitZ();
-      if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
-      if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
-      if (const auto* b = std::get_if<dem::BoxWall>(&w.shape)) axis = b->motion.axis;
-      v.push_back(w.force[2]);
-      v.push_back(w.torque.dot(axis));
+  if (coupler_)
+    for (const char* name :
+         {"drag_force_x_N", "drag_force_y_N", "drag_force_z_N", "pressure_gradient_force_z_N",
+          "mean_eps_at_particles", "eps_clipped_cells", "gas_work_on_particles_J"})
+      c.emplace_back(name);
+  c.insert(c.end(), extra_.columns.begin(), extra_.columns.end());
+  return c;
+}
+
+std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
+  std::vector<double> v;
+  for (const auto& w : s.walls()) {
+    Vec3 axis = Vec3::UnitZ();
+    if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
+    if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
+    if (const auto* b = std::get_if<dem::BoxWall>(&w.shape)) axis = b->motion.axis;
+    v.push_back(w.force[2]);
+    v.push_back(w.torque.dot(axis));
+  }
+  v.push_back(inflow_.inserted);
+  if (gas_) {
+    const auto g = fluid_values(*gas_, fluid_);
+    v.insert(v.end(), g.begin(), g.end());
+  }
+  if (coupler_) {
+    const auto& r = report_;
+    v.insert(v.end(), {r.drag[0], r.drag[1], r.drag[2], r.pressure_force[2], r.mean_eps_particles,
+                       double(r.porosity.clipped), s.energy().external_work});
+  }
+  if (extra_.values) {
+    const auto e = extra_.values(s);
+    v.insert(v.end(), e.begin(), e.end());
+  }
+  return v;
+}
+
+int BoxScenario::run(const RunContext& ctx) {
+  DriverHooks hooks;
+  hooks.before_step = [this, &ctx](dem::DemSolver& s) {
+    before_step(s);
+    advance_gas(s);
+    // Clipped gas fractions: said once per run, with where (kernel.hpp).
+    if (coupler_ && report_.porosity.clipped > 0 && !clip_warned_ && ctx.log) {
+      clip_warned_ = true;
+      const auto& p = report_.porosity;
+      ctx.log->line("warning: coupling: eps fell below coupling.eps_min = " +
+                    to_text(coupling_.settings.eps_min) + " in " + std::to_string(p.clipped) +
+                    " cells at t = " + to_text(s.time()) + " s (lowest " + to_text(p.lowest) +
+                    ", first at cell " + std::to_string(p.first[0]) + ", " +
+                    std::to_string(p.first[1]) + ", " + std::to_string(p.first[2]) +
+                    "); clipped there. A wider coupling.kernel_width smooths the bed");
     }
-    v.push_back(inflow_.inserted);
-    if (gas_) {
-      const auto g = fluid_values(*gas_, fluid_);
-      v.insert(v.end(), g.begin(), g.end());
-    }
-    return v;
   };
+  hooks.extra_columns = columns();
+  hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
   hooks.save = [this](H5Out& f) {
     std::ostringstream os;
     os << rng_;
@@ -328,7 +420,7 @@ int BoxScenario::run(const RunContext& ctx) {
     hooks.health = [this](const dem::DemSolver& s) {
       return check_fluid_health(*gas_, fluid_, s.time(), s.steps());
     };
-    hooks.cycle = sub_.cycle();
+    hooks.cycle = cycle();
   }
   DemDriver driver(*solver_, out_, hooks);
   return driver.run(ctx);

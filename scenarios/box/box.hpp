@@ -5,10 +5,13 @@
 // the physics tests and the benchmarks are all set up through it.
 //
 // With a [fluid] table the box also holds a gas (lbm::LbmSolver, fluid_config.hpp), advanced
-// alongside the particles but not yet coupled to them: an integer number of gas steps per DEM step,
-// or of DEM steps per gas step (SubCycle), the gas stepping first in each cycle (DESIGN §2.1). A
+// alongside the particles: an integer number of gas steps per DEM step, or of DEM steps per gas
+// step (SubCycle), the gas stepping first in each cycle (DESIGN §2.1). With [coupling] as well
+// (coupling_config.hpp) gas and particles exchange momentum (coupling/coupler.hpp) once per
+// exchange interval of whole cycles: the gas runs the interval's steps first, then the DEM. A
 // box with [fluid] and no particles, fills or [[materials]] is a pure gas run: the DEM then only
 // keeps the clock, one DEM step per gas step, and takes no [dem] table.
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -17,7 +20,9 @@
 #include "dem/dem_solver.hpp"
 #include "dem/insertion.hpp"
 #include "lbm/lbm_solver.hpp"
+#include "coupling/coupler.hpp"
 #include "scenarios/common/cg_config.hpp"
+#include "scenarios/common/coupling_config.hpp"
 #include "scenarios/common/dem_config.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
@@ -33,12 +38,31 @@ class BoxScenario : public Scenario {
   void banner(Log& log) const override;
   int run(const RunContext& ctx) override;
   dem::DemSolver& solver() { return *solver_; }
+  const dem::DemSolver& solver() const { return *solver_; }
+  const lbm::LbmSolver* gas() const { return gas_.get(); }
+  const coupling::Coupler* coupler() const { return coupler_.get(); }
   /// The gas, or null without [fluid].
   lbm::LbmSolver* gas() { return gas_.get(); }
   const FluidConfig& fluid() const { return fluid_; }
   const SubCycle& sub_cycle() const { return sub_; }
-  /// Advances the gas by the steps that come before DEM step s.steps() (SubCycle).
-  void advance_gas(const dem::DemSolver& s);
+  /// Advances the gas by the steps that come before DEM step s.steps() (SubCycle), or, coupled,
+  /// runs the exchange interval that starts there.
+  void advance_gas(dem::DemSolver& s);
+  /// The exchange, or null without [coupling].
+  coupling::Coupler* coupler() { return coupler_.get(); }
+  const coupling::ExchangeReport& exchange_report() const { return report_; }
+  /// DEM steps at which every solver stands at the same time (output and checkpoint instants).
+  std::int64_t cycle() const;
+  /// Columns and values the box writes to timeseries.csv (public for scenarios built on it).
+  std::vector<std::string> columns() const;
+  std::vector<double> values(const dem::DemSolver& s) const;
+  /// Extra columns from a scenario built on the box (fluidized bed): called at every row.
+  struct Extra {
+    std::vector<std::string> columns;
+    std::function<std::vector<double>(const dem::DemSolver&)> values;
+    std::function<void(Log&)> banner;
+  };
+  void set_extra(Extra e) { extra_ = std::move(e); }
   /// Inflow and outlet, called by the driver before every step (public for tests that step by
   /// hand).
   void before_step(dem::DemSolver& s);
@@ -61,6 +85,13 @@ class BoxScenario : public Scenario {
 
   std::unique_ptr<dem::DemSolver> solver_;
   std::unique_ptr<lbm::LbmSolver> gas_;
+  std::unique_ptr<coupling::Coupler> coupler_;
+  CouplingConfig coupling_;
+  ExchangeInterval interval_;
+  coupling::ExchangeReport report_;
+  std::array<Vec3, 6> inlet_set_;  // inflow velocity last given to each ramped face [m/s]
+  Extra extra_;
+  bool clip_warned_ = false;
   FluidConfig fluid_;
   SubCycle sub_;
   bool gas_only_ = false;

@@ -48,6 +48,12 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
                        "an inlet's velocity must point into the box (" +
                            std::string(inward > 0 ? "+" : "-") + kAxes[axis] + ")",
                        "flip the sign of its " + std::string(kAxes[axis]) + " component");
+    // Gas started late or ramped (a fluidized bed settles first): velocity x clamp((t -
+    // ramp_start) / ramp_time, 0, 1), a step at ramp_start when ramp_time = 0.
+    out.ramp_start =
+        table.get("ramp_start", 0.0, Range::non_negative("give the time the inflow starts in s"));
+    out.ramp_time =
+        table.get("ramp_time", 0.0, Range::non_negative("give the ramp duration in s (0: a step)"));
   } else if (out.kind == "outlet") {
     out.pressure = table.get("pressure", 0.0);
   }
@@ -114,7 +120,8 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                 c.faces[std::size_t(f)].velocity);
 
   c.body_force = fluid.get_vec3("body_force", Vec3::Zero());
-  if (fluid.get_bool("gravity", false)) c.body_force += c.density * gravity;
+  c.weighs = fluid.get_bool("gravity", false);
+  if (c.weighs) c.body_force += c.density * gravity;
   // Along a wall-bounded axis a force density F is held by a static pressure gradient, so the
   // pressure varies by |F_a| L_a across the box; along a periodic axis it drives flow instead.
   // An outlet held at a gauge pressure p differs from the reference by |p| as well.
@@ -217,7 +224,7 @@ lbm::LbmSettings FluidConfig::lattice() const {
       out.kind = lbm::FaceKind::periodic;
     } else if (in.kind == "inlet") {
       out.kind = lbm::FaceKind::inlet;
-      out.wall_velocity = to_lattice(in.velocity);
+      out.wall_velocity = to_lattice(in.velocity_at(0));
     } else if (in.kind == "outlet") {
       // p - p_ref = (rho - 1) c_s^2 in lattice units.
       out.kind = lbm::FaceKind::outlet;

@@ -13,7 +13,8 @@
 //   collision = "trt" (magic, default 3/16) | "bgk" | "les" (smagorinsky, default 0.1),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
-//   {kind = "inlet", velocity = [..]} | {kind = "outlet", pressure = p [Pa, gauge]}.
+//   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s]} |
+//   {kind = "outlet", pressure = p [Pa, gauge]}.
 // Memory: 19 doubles per cell (152 B) plus the ghost layer.
 #include <array>
 #include <cstdint>
@@ -28,9 +29,18 @@
 namespace lbdem::scenarios {
 
 struct FluidFace {
-  std::string kind = "wall";     // wall | periodic | moving_wall | inlet | outlet
-  Vec3 velocity = Vec3::Zero();  // moving_wall, inlet [m/s]
-  double pressure = 0;           // outlet, gauge pressure p - p_ref [Pa]
+  std::string kind = "wall";             // wall | periodic | moving_wall | inlet | outlet
+  Vec3 velocity = Vec3::Zero();          // moving_wall, inlet [m/s]
+  double pressure = 0;                   // outlet, gauge pressure p - p_ref [Pa]
+  double ramp_start = 0, ramp_time = 0;  // inlet: starts at ramp_start, full after ramp_time [s]
+  /// The inflow velocity at time t [m/s] (velocity itself for other kinds).
+  Vec3 velocity_at(double t) const {
+    if (kind != "inlet") return velocity;
+    if (t < ramp_start) return Vec3::Zero();
+    if (ramp_time <= 0 || t >= ramp_start + ramp_time) return velocity;
+    return velocity * ((t - ramp_start) / ramp_time);
+  }
+  bool ramped() const { return kind == "inlet" && (ramp_start > 0 || ramp_time > 0); }
 };
 
 struct FluidConfig {
@@ -42,6 +52,7 @@ struct FluidConfig {
   std::string collision = "trt";   // trt | bgk | les
   double magic = 0, smagorinsky = 0;
   Vec3 body_force = Vec3::Zero();        // total force density on the gas, gravity included [N/m^3]
+  bool weighs = false;                   // body_force includes the gas's weight rho g
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]
   std::array<FluidFace, 6> faces;        // x_lo, x_hi, y_lo, y_hi, z_lo, z_hi
   Vec3 lo = Vec3::Zero();                // box corner [m]
