@@ -41,9 +41,10 @@ FluidizedBedScenario::FluidizedBedScenario(const Config& cfg) : box_(cfg) {
   h_min_ = box_.solver().settings().contact.h_min;
 
   BoxScenario::Extra extra;
-  extra.columns = {"bed_height_m", "pressure_drop_Pa"};
+  extra.columns = {"bed_height_m", "pressure_drop_Pa", "bed_voidage"};
   extra.values = [this](const dem::DemSolver&) {
-    return std::vector<double>{bed_height(), pressure_drop()};
+    const double h = bed_height();
+    return std::vector<double>{h, pressure_drop(), bed_voidage(h)};
   };
   extra.banner = [this](Log& log) { bed_banner(log); };
   box_.set_extra(std::move(extra));
@@ -90,6 +91,22 @@ double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>&
     return cells > 0 ? sum / cells : 0.0;
   };
   return (1 - w) * plane(k0) + w * plane(k0 + 1);
+}
+
+double FluidizedBedScenario::bed_voidage(double height) const {
+  const FluidConfig& f = box_.fluid();
+  const auto& eps = box_.coupler()->eps();
+  const auto& g = box_.gas()->grid();
+  const auto& flags = box_.gas()->flags();
+  // Cell planes whose centres lie below the bed height less two kernel widths (the smeared top).
+  const double top = height - 2 * box_.coupler()->settings().kernel_width;
+  double sum = 0, cells = 0;
+  for (int z = 0; z < f.cells[2] && (z + 0.5) * f.dx < top; ++z)
+    for (int y = 0; y < f.cells[1]; ++y)
+      for (int x = 0; x < f.cells[0]; ++x)
+        if (flags.at(x, y, z) == lbm::kFluid)
+          sum += eps[std::size_t(g.compact_index(x, y, z))], cells += 1;
+  return cells > 0 ? sum / cells : 1.0;
 }
 
 double FluidizedBedScenario::pressure_drop() const {

