@@ -16,6 +16,7 @@
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed.hpp"
+#include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
@@ -75,12 +76,15 @@ void make_plots(const std::string& dir, Log& log) {
 
 int run_study(const StudyOptions& opt) {
   if (opt.list || opt.name.empty()) {
+    std::cout << "fluidized_bed  original against CG 1-4 beds, cohesionless and cohesive under the "
+                 "l^2 and l^3 rules (DESIGN 1.1): bed height and pressure drop, spectra, table\n";
     std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule "
                  "(DESIGN 1.2): torque table and plot\n";
     return 0;
   }
   if (opt.name == "rheometer") return run_rheometer_study(opt);
-  throw InputError("study", opt.name, "unknown study; known: rheometer",
+  if (opt.name == "fluidized_bed") return run_fluidized_bed_study(opt);
+  throw InputError("study", opt.name, "unknown study; known: fluidized_bed, rheometer",
                    "run ./lbdem study --list");
 }
 

@@ -23,7 +23,7 @@ from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter  # noqa
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_run import read_csv  # noqa: E402  (same partial-line handling as the run plots)
 
-UNITS = {"_Nm": "N m", "_N": "N", "_J": "J", "_W": "W", "_kg": "kg", "_s": "s", "_m": "m",
+UNITS = {"_Pa": "Pa", "_Nm": "N m", "_N": "N", "_J": "J", "_W": "W", "_kg": "kg", "_s": "s", "_m": "m",
          "_per_s": "1/s", "_Nms": "N m s", "_rad": "rad", "_m_per_s": "m/s"}
 
 

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/types.hpp"
+#include "scenarios/common/study_case.hpp"
 #include "scenarios/run_command.hpp"
 
 namespace lbdem::scenarios {
@@ -98,18 +99,6 @@ Series read_torque(const std::string& csv) {
   return s;
 }
 
-double last_time(const std::string& csv) {
-  const Series s = read_torque(csv);
-  return s.t.empty() ? 0.0 : s.t.back();
-}
-
-std::string status_of(const std::string& dir) {
-  std::ifstream f(dir + "/status");
-  std::string s;
-  std::getline(f, s);
-  return s;
-}
-
 std::string fmt(double v, const char* f = "%.4g") {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
@@ -155,14 +144,6 @@ TorqueSummary summarize_torque(const std::vector<double>& t, const std::vector<d
   return out;
 }
 
-// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
-std::pair<double, double> read_timing(const std::string& dir) {
-  std::ifstream in(dir + "/study_timing.txt");
-  double wall = 0, simulated = 0;
-  if (!(in >> wall >> simulated)) return {0.0, 0.0};
-  return {wall, simulated};
-}
-
 int run_rheometer_study(const StudyOptions& opt) {
   std::vector<const Case*> todo;
   for (const auto& c : cases())
@@ -186,47 +167,9 @@ int run_rheometer_study(const StudyOptions& opt) {
            "steady_torque_Nm,steady_torque_err_Nm,fluctuation_Nm,blocks,simulated_s,"
            "wall_s_per_simulated_s\n";
   for (const Case* c : todo) {
-    const std::string dir = root + "/" + c->name;
-    const std::string st = status_of(dir);
-    RunOptions ro;
-    ro.threads = opt.threads;
-    ro.no_plots = opt.no_plots;
-    if (opt.end_time > 0) ro.sets.push_back("run.end_time=" + fmt(opt.end_time, "%.17g"));
-    const double t_before = last_time(dir + "/timeseries.csv");
-    const bool resumable = fs::exists(dir + "/checkpoint.h5") && st.rfind("finished", 0) != 0;
-    // Done: finished, and (with --end-time) its last row within one output interval of the end.
-    double interval = 0;
-    if (fs::exists(dir + "/config.toml"))
-      interval = Config::from_file(dir + "/config.toml").section("output").get("interval", 0.0);
-    const bool done = st.rfind("finished", 0) == 0 &&
-                      (opt.end_time <= 0 || t_before >= opt.end_time - interval * (1 + 1e-9));
-    double wall = 0;
-    if (!done) {
-      if (resumable || st.rfind("finished", 0) == 0) {
-        ro.resume = dir;
-      } else {
-        fs::remove_all(dir);
-        ro.scenario = "rheometer";
-        ro.config = src + "/scenarios/rheometer/presets/" + c->preset + ".toml";
-        ro.out = dir;
-        for (const auto& s : c->sets) ro.sets.push_back(s);
-        for (const auto& s : opt.sets) ro.sets.push_back(s);
-      }
-      std::cout << "== rheometer study: " << c->name << (ro.resume.empty() ? "" : " (resumed)")
-                << "\n";
-      const auto t0 = std::chrono::steady_clock::now();
-      const int rc = run_scenario(ro);
-      wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (rc != 0) return rc;
-      // Wall and simulated time summed over the invocations that advanced the case, so the table
-      // keeps its cost however often it was resumed.
-      const double t_after = last_time(dir + "/timeseries.csv");
-      const auto [wall0, sim0] = read_timing(dir);
-      write_file_atomic(dir + "/study_timing.txt",
-                        fmt(wall0 + wall, "%.17g") + " " +
-                            fmt(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_before), "%.17g") +
-                            "\n");
-    }
+    StudyCase sc{c->name, "rheometer", src + "/scenarios/rheometer/presets/" + c->preset + ".toml",
+                 c->sets};
+    if (const int rc = run_study_case(root, sc, opt, "rheometer study"); rc != 0) return rc;
   }
   // The table holds every case of the study folder, not only those of this invocation.
   for (const auto& case_ : cases()) {
