@@ -26,6 +26,7 @@ Coupler::Coupler(lbm::LbmSolver& gas, const lbm::LatticeFrame& frame,
   if (s_.two_way) {
     gas_.enable_porosity();
     gas_.enable_force_field();
+    gas_.enable_velocity_sum();
   }
 }
 
@@ -50,13 +51,17 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   kernel_.locate(p.x);
   report_.unmapped = kernel_.unmapped_count();
 
-  // Gas fraction, and the gas's intrinsic velocity now (for the slip that sets beta_p): the
-  // superficial velocity over the eps the gas last stepped with.
+  // Gas fraction, and the gas's intrinsic velocity now for the slip that sets beta_p: the
+  // populations' own momentum over the new eps. It leaves out the half-force shift and the
+  // implicit drag of the last step (a few % of the slip, which moves beta_p only through the
+  // inertial part of the law); what it gains is that it depends on the populations alone, so a
+  // run resumed from a checkpoint takes the same beta_p as one that never stopped. The exchange
+  // itself is exact whatever beta_p is.
   report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
-  gas_.velocity(cell_vec_);
+  eps_.swap(cell_scalar_);
+  gas_.raw_velocity(cell_vec_);
   if (s_.two_way)
     for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
-  eps_.swap(cell_scalar_);
   const double to_si = units_.velocity_to_si(1.0);
   // eps and the slip that sets beta_p only need local values: the filtered eps is already smooth,
   // and the exchange stays exact whatever velocity beta_p was evaluated at.
@@ -85,7 +90,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   report_.max_particle_rate = rate;
   report_.mean_eps_particles = np ? eps_sum / double(np) : 1.0;
 
-  // Pressure-gradient force -V_p grad p, interpolated with the same kernel.
+  // Pressure-gradient force -V_p grad p at the particles.
   f_grad_.assign(np, Vec3::Zero());
   if (s_.pressure_gradient) {
     std::vector<double> pr;
@@ -121,14 +126,13 @@ void Coupler::before_gas_step() {
   if (steps_done_ >= steps_)
     throw std::logic_error("coupling: more gas steps than begin_interval announced");
   ++steps_done_;
-  // The velocity this step's collision uses (the fields are those begin_interval set), summed
+  // The velocity each step's collision uses (the fields are those begin_interval set), summed
   // over the interval: interpolation is linear, so the mean drag each particle gets at the end is
-  // exactly what the gas lost over the steps.
+  // exactly what the gas lost over the steps. Two-way, the collision itself keeps the sum of u/eps
+  // (LbmSolver::enable_velocity_sum); one-way, the gas's velocity is read before each step.
+  if (s_.two_way) return;
   gas_.velocity(cell_vec_);
-  if (s_.two_way)
-    for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c] / eps_[c];
-  else
-    for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c];
+  for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c];
 }
 
 const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
@@ -138,6 +142,7 @@ const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
   if (p.size() != beta_.size())
     throw std::logic_error("coupling: the particles changed during an exchange interval");
   const double inv = 1.0 / steps_;
+  if (s_.two_way) gas_.take_velocity_sum(u_sum_);
   kernel_.interpolate(u_sum_, u_p_);
   const double to_si = units_.velocity_to_si(1.0) * inv;
   acc_.resize(p.size());

@@ -168,6 +168,25 @@ void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha)
   alpha_[n] = alpha;
 }
 
+void LbmSolver::enable_velocity_sum() {
+  if (has_velocity_sum()) return;
+  for (auto& a : u_sum_) a.assign(std::size_t(grid().storage_cells()), 0.0);
+}
+
+void LbmSolver::take_velocity_sum(std::vector<Vec3>& out) {
+  const Grid& g = grid();
+  out.assign(std::size_t(g.cells()), Vec3::Zero());
+  if (!has_velocity_sum()) return;
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const auto n = std::size_t(g.index(x, y, z));
+        if (!flags_.fluid(Index(n))) continue;
+        out[std::size_t(g.compact_index(x, y, z))] = Vec3(u_sum_[0][n], u_sum_[1][n], u_sum_[2][n]);
+      }
+  for (auto& a : u_sum_) std::fill(a.begin(), a.end(), 0.0);
+}
+
 void LbmSolver::set_porosity_field(std::span<const double> eps, std::span<const double> alpha) {
   const Grid& g = grid();
   if (eps.size() != std::size_t(g.cells()) || alpha.size() != std::size_t(g.cells()))
@@ -226,16 +245,22 @@ void LbmSolver::porosity(std::vector<double>& eps) const {
 }
 
 template <class Fn>
-void LbmSolver::with_forcing(Fn&& fn) const {
+void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
   const Vec3& b = settings_.body_force;
   const CellForce uniform{b.x(), b.y(), b.z()};
   if (has_porosity()) {
+    const auto sums = [&](auto policy) {
+      if (accumulate && has_velocity_sum())
+        for (int a = 0; a < 3; ++a) policy.u_sum[a] = u_sum_[std::size_t(a)].data();
+      return policy;
+    };
     if (has_force_field())
-      fn(PorousMedium<FieldForce>{
+      fn(sums(PorousMedium<FieldForce>{
           FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform}, eps_.data(),
-          alpha_.data(), beta_});
+          alpha_.data(), beta_}));
     else
-      fn(PorousMedium<UniformForce>{UniformForce{uniform}, eps_.data(), alpha_.data(), beta_});
+      fn(sums(
+          PorousMedium<UniformForce>{UniformForce{uniform}, eps_.data(), alpha_.data(), beta_}));
   } else if (has_force_field())
     fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
   else if (!b.isZero())
@@ -249,9 +274,13 @@ void LbmSolver::step() {
   with_forcing([&](const auto& forcing) {
     for (Body& b : bodies_)
       if (b.outlet_density > 0) sample_outlet_velocity(pdf_, state_, forcing, b.outlet);
-    std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, forcing); },
-               settings_.collision);
   });
+  with_forcing(
+      [&](const auto& forcing) {
+        std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, forcing); },
+                   settings_.collision);
+      },
+      true);
   state_ = after_step(state_);
   for (Body& b : bodies_)
     b.load = b.outlet_density > 0
@@ -309,6 +338,10 @@ void LbmSolver::density(std::vector<double>& rho) const {
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
   with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, nullptr, &u); });
+}
+
+void LbmSolver::raw_velocity(std::vector<Vec3>& u) const {
+  moment_fields(pdf_, state_, NoForce{}, flags_, nullptr, &u);
 }
 
 Vec3 LbmSolver::raw_momentum() const {

@@ -108,6 +108,13 @@ class LbmSolver {
   bool has_porosity() const { return !eps_.empty(); }
   void set_cell_porosity(int x, int y, int z, double eps, double alpha = 0);
   void set_forchheimer(double beta);
+  /// Sums, over the steps since the last take_velocity_sum, of the intrinsic velocity u / eps each
+  /// collision used [lattice units], kept by the kernel itself (porous form only: a no-op
+  /// otherwise). take_velocity_sum returns them over interior cells in compact order and restarts
+  /// the sums; the number of steps they hold is the caller's to count.
+  void enable_velocity_sum();
+  bool has_velocity_sum() const { return !u_sum_[0].empty(); }
+  void take_velocity_sum(std::vector<Vec3>& out);
   /// Whole fields at once, over interior cells in compact order (Grid::compact_index), as the
   /// coupling exchanges them: eps in (0, 1] and alpha >= 0 (checked; std::invalid_argument naming
   /// the first bad cell), force density [lattice units]. Solid cells are skipped.
@@ -130,6 +137,9 @@ class LbmSolver {
   /// Fields over interior cells in compact order; solid cells read 0.
   void density(std::vector<double>& rho) const;
   void velocity(std::vector<Vec3>& u) const;
+  /// sum_q c_q f_q / rho: the populations' velocity without the half-force shift or the porous
+  /// form's implicit drag, a function of the populations alone.
+  void raw_velocity(std::vector<Vec3>& u) const;
   /// Sum of rho over fluid cells, bitwise independent of the thread count.
   double total_mass() const;
   /// Sum over fluid cells of sum_q c_q f_q, the momentum before the half-force shift [lattice
@@ -150,9 +160,10 @@ class LbmSolver {
   };
   void rebuild_links();
   void set_wall_velocity_terms(Body& b);
-  /// Calls fn(forcing) with the cheapest policy that represents the current forces.
+  /// Calls fn(forcing) with the cheapest policy that represents the current forces; with
+  /// `accumulate`, a porous policy also adds to the velocity sums (the collision of a step only).
   template <class Fn>
-  void with_forcing(Fn&& fn) const;
+  void with_forcing(Fn&& fn, bool accumulate = false) const;
 
   LbmSettings settings_;
   PdfField pdf_;
@@ -160,7 +171,8 @@ class LbmSolver {
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};
   std::array<std::vector<double>, 3> force_;
-  std::vector<double> eps_, alpha_;  // per storage cell, when porosity is enabled
+  std::vector<double> eps_, alpha_;                   // per storage cell, when porosity is enabled
+  mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
   double beta_ = 0;
   AaState state_ = AaState::natural;
   long steps_ = 0;

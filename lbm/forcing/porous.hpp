@@ -41,6 +41,10 @@ struct PorousMedium {
   const double* eps;    // fluid fraction per storage cell, 0 < eps <= 1
   const double* alpha;  // Darcy drag mu eps / K per storage cell [lattice units], >= 0
   double beta = 0;      // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
+  // Optional sums of the intrinsic velocity u / eps per storage cell (x, y, z), added to by every
+  // collision that uses this policy (LbmSolver::enable_velocity_sum): the coupling's record of the
+  // velocities the gas's drag acted on, without a second pass over the populations.
+  double* u_sum[3] = {nullptr, nullptr, nullptr};
 
   CellForce at(Index n) const { return applied.at(n); }
   CellMoments moments(const double (&f)[kQ], Index n, CellForce& force) const {
@@ -54,6 +58,11 @@ struct PorousMedium {
     m.uy *= scale;
     m.uz *= scale;
     m.inv_eps = 1.0 / eps[n];
+    if (u_sum[0]) {
+      u_sum[0][n] += m.ux * m.inv_eps;
+      u_sum[1][n] += m.uy * m.inv_eps;
+      u_sum[2][n] += m.uz * m.inv_eps;
+    }
     const double drag = m.rho * (a + beta * v * scale);  // rho (alpha + beta |u|)
     force = {g.fx - drag * m.ux, g.fy - drag * m.uy, g.fz - drag * m.uz};
     return m;

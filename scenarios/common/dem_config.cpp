@@ -105,14 +105,15 @@ StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
                             const std::vector<dem::Material>& mats,
                             const std::vector<int>& wall_mats, double r_min, double dt_factor) {
   StepChoice c{};
-  const bool given = d.has("dt");
   c.impact_speed =
       d.get("impact_speed", 1.0, Range::positive("give the characteristic impact speed in m/s"));
   c.scales = dem::time_scales(cs, mats, wall_mats, r_min, c.impact_speed);
   const double tc = c.scales.contact_time;
   const double per = d.get("steps_per_contact", 50.0, Range::closed(1, 1e6));
-  c.dt = d.get("dt", tc / per, Range::positive("give the time step in s"));
-  if (given) c.dt *= dt_factor;  // a dt given for the original particles, scaled for parcels
+  // dem.dt is the ORIGINAL particles' step, scaled for parcels; the default is recorded that way
+  // too (t_c / per of the parcels over the factor), so the resolved config of a coarse-grained run
+  // resumes with the same step instead of scaling it a second time.
+  c.dt = d.get("dt", tc / per / dt_factor, Range::positive("give the time step in s")) * dt_factor;
   const bool force = d.get_bool("force_dt", false);
   if (c.dt > tc / 20 && !force)
     throw InputError(
