@@ -24,8 +24,10 @@ struct Bgk {
   }
   double viscosity() const { return viscosity_from_tau(1.0 / omega); }
 
+  // always_inline: see regularized_les.hpp (a call left in the omp simd cell loop runs scalar).
   template <bool kForced>
-  void relax(double (&f)[kQ], const CellMoments& m, const CellForce& force) const {
+  [[gnu::always_inline]] void relax(double (&f)[kQ], const CellMoments& m,
+                                    const CellForce& force) const {
     // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
     const double usq = 1.5 * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
     const double q2 = 4.5 * m.inv_eps;

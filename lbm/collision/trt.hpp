@@ -34,8 +34,10 @@ struct Trt {
   double magic() const { return (1.0 / omega_plus - 0.5) * (1.0 / omega_minus - 0.5); }
   double viscosity() const { return viscosity_from_tau(1.0 / omega_plus); }
 
+  // always_inline: see regularized_les.hpp (a call left in the omp simd cell loop runs scalar).
   template <bool kForced>
-  void relax(double (&f)[kQ], const CellMoments& m, const CellForce& force) const {
+  [[gnu::always_inline]] void relax(double (&f)[kQ], const CellMoments& m,
+                                    const CellForce& force) const {
     // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
     const double usq = 1.5 * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
     const double q2 = 4.5 * m.inv_eps;

@@ -21,7 +21,7 @@ namespace lbdem::lbm {
 struct NoForce {
   static constexpr bool kActive = false;
   CellForce at(Index) const { return {}; }
-  CellMoments moments(const double (&f)[kQ], Index, CellForce& force) const {
+  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index, CellForce& force) const {
     force = {};
     return cell_moments<false>(f, force);
   }
@@ -32,7 +32,7 @@ struct UniformForce {
   static constexpr bool kActive = true;
   CellForce force;
   CellForce at(Index) const { return force; }
-  CellMoments moments(const double (&f)[kQ], Index, CellForce& out) const {
+  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index, CellForce& out) const {
     out = force;
     return cell_moments<true>(f, out);
   }
@@ -49,7 +49,7 @@ struct FieldForce {
   CellForce at(Index n) const {
     return {uniform.fx + fx[n], uniform.fy + fy[n], uniform.fz + fz[n]};
   }
-  CellMoments moments(const double (&f)[kQ], Index n, CellForce& out) const {
+  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index n, CellForce& out) const {
     out = at(n);
     return cell_moments<true>(f, out);
   }

@@ -47,7 +47,8 @@ struct PorousMedium {
   double* u_sum[3] = {nullptr, nullptr, nullptr};
 
   CellForce at(Index n) const { return applied.at(n); }
-  CellMoments moments(const double (&f)[kQ], Index n, CellForce& force) const {
+  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index n,
+                                             CellForce& force) const {
     const CellForce g = applied.at(n);
     CellMoments m = cell_moments<true>(f, g);  // u = v here
     const double a = alpha[n] / m.rho;         // GZ's rate eps nu / K
