@@ -63,9 +63,9 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   if (s_.two_way)
     for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
   const double to_si = units_.velocity_to_si(1.0);
-  // eps and the slip that sets beta_p only need local values: the filtered eps is already smooth,
-  // and the exchange stays exact whatever velocity beta_p was evaluated at.
-  kernel_.interpolate_local(eps_, eps_p_);
+  // eps at the particle through the same kernel as everything else the gas gives it; the slip that
+  // sets beta_p only needs a local value (the exchange is exact whatever beta_p is).
+  kernel_.interpolate(eps_, eps_p_);
   kernel_.interpolate_local(cell_vec_, u_p_);
 
   // Drag coefficients (the law of one original times l^3, coarse_grain_drag.hpp), held over the
@@ -96,7 +96,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
     std::vector<double> pr;
     pressure(pr);
     kernel_.pressure_gradient(pr, cell_vec_);
-    kernel_.interpolate_local(cell_vec_, f_grad_);  // any force the gas gets back exactly
+    kernel_.interpolate(cell_vec_, f_grad_);
     for (std::size_t k = 0; k < np; ++k)
       f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);
   }

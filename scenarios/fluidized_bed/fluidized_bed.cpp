@@ -76,6 +76,17 @@ double FluidizedBedScenario::bed_height() const {
 
 double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>& p) const {
   const FluidConfig& f = box_.fluid();
+  // At the distributor or the outlet: the gas's push on that face (its momentum-exchange force)
+  // per area, what a tap in the plate reads, rather than an extrapolation of the cell planes over
+  // the half cell next to it, where the bed's lowest forces sit.
+  const double z_hi = f.lo.z() + f.cells[2] * f.dx;
+  const double area = f.cells[0] * f.dx * f.cells[1] * f.dx;
+  if (z <= f.lo.z() || z >= z_hi) {
+    const lbm::LbmSolver& gas = *box_.gas();
+    const double fz =
+        f.units().force_to_si(gas.wall_force(gas.face_body(z <= f.lo.z() ? 4 : 5)).z());
+    return (z <= f.lo.z() ? -fz : fz) / area;
+  }
   // Linear between the cell-centre planes, extrapolated over the half cell next to a face.
   const double s = (z - f.lo.z()) / f.dx - 0.5;  // cell-centre coordinate
   const int k0 = std::clamp(int(std::floor(s)), 0, f.cells[2] - 2);

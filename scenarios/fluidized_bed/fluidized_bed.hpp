@@ -7,8 +7,8 @@
 //                     the particle volume lies,
 //   pressure_drop_Pa  the plane-averaged gauge pressure at bed.pressure_taps[0] minus that at
 //                     bed.pressure_taps[1] (heights in m; default the distributor and the outlet,
-//                     extrapolated over the half cell next to them), so it holds the bed's weight
-//                     and the gas's tiny hydrostatic head between the taps,
+//                     where the gas's force on the face per area is read), so it holds the bed's
+//                     weight and the gas's tiny hydrostatic head between the taps,
 //   bed_voidage       the mean gas fraction of the kernel's eps field over the cells below the bed
 //                     height less two kernel widths (the smeared top surface left out),
 // and a banner with the bed's weight per area (less buoyancy, the fluidized pressure drop), the

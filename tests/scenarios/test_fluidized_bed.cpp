@@ -2,7 +2,7 @@
 // (l = 4 of 100 um originals, cohesionless, periodic sides) poured through still air, then the
 // inflow ramped slowly to about 3 U_mf. Against references: once fluidized, the pressure drop and
 // the distributor plate together carry the bed's weight per area less buoyancy (plus the gas's
-// own head) within 1 %, the pressure drop alone within 5 % (see below); and the
+// own head) within 3 %, the pressure drop alone within 5 % (see below); and the
 // minimum fluidization velocity read from the ramp (the fixed-bed line of dp against U meeting the
 // weight) lies within 15 % of the Ergun balance at the bed's own measured voidage (the issue's
 // tolerances). Both come from one run of 0.5 s.
@@ -137,12 +137,13 @@ TEST_CASE("fluidized bed: dp = weight / area once fluidized, U_mf from a ramp ag
   const double mass = 1.8e-5;
   const double weight = mass * g * (1 - rho_f / rho_p) / area + rho_f * g * column;
 
-  // (1) Fluidized: mean over 0.33 - 0.5 s, the inflow held at 25 mm/s. The bed's momentum does
-  // not grow, so over time the gas (dp A) and the distributor plate (its contact force) carry the
-  // weight: 1 %, the noise of a mean over 0.17 s of an oscillation of about 1.2 Pa rms with a
-  // period near 0.05 s. This bed, 5 parcels wide, slugs and falls back onto the plate, which then
-  // carries about 4 % of the weight (1.7 Pa of 44.3 measured); the issue's 3 % for dp alone holds
-  // in the wider default bed (dp 44.4 Pa against 44.4 Pa), so dp alone is held to 5 % here.
+  // (1) Fluidized: mean over 0.33 - 0.5 s, the inflow held at 25 mm/s. Over time the gas (dp A)
+  // and the distributor plate (its contact force) carry the weight; the window's ends add the
+  // bed's momentum change over it, M dv / T: the bed oscillates at about 0.01 m/s, so up to
+  // 1.8e-5 kg x 0.02 m/s / 0.17 s / 4e-6 m^2 = 0.5 Pa, and the 34 samples of dp (1.2 Pa rms,
+  // correlated over the 0.05 s period) add about as much: 3 % of 44 Pa. This bed, 5 parcels wide,
+  // slugs and falls back onto the plate, which carries 3-4 % of the weight (1.4-1.7 Pa), so dp
+  // alone is held to 5 % here; the wider study beds give dp + plate within 0.5 % of the weight.
   const int iw = t.col("wall_z_lo_force_z_N");
   double dp = 0, plate = 0;
   int n = 0;
@@ -151,7 +152,7 @@ TEST_CASE("fluidized bed: dp = weight / area once fluidized, U_mf from a ramp ag
   dp /= n;
   plate /= n;
   CAPTURE(dp, plate, weight);
-  CHECK(dp + plate == Approx(weight).epsilon(0.01));
+  CHECK(dp + plate == Approx(weight).epsilon(0.03));
   CHECK(dp == Approx(weight).epsilon(0.05));
 
   // (2) U_mf: the fixed-bed part of the ramp (dp below 60 % of the weight, U above 5 % of the
