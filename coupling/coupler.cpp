@@ -31,10 +31,8 @@ Coupler::Coupler(lbm::LbmSolver& gas, const lbm::LatticeFrame& frame,
 }
 
 void Coupler::pressure(std::vector<double>& p) const {
-  gas_.density(p);
-  const std::vector<std::uint8_t> solid = ParticleKernel::solid_mask(gas_.flags());
-  for (std::size_t c = 0; c < p.size(); ++c)
-    p[c] = solid[c] ? 0.0 : units_.pressure_to_si((p[c] - 1.0) * lbm::kCs2);
+  gas_.density(p);  // solid cells read 0
+  for (double& v : p) v = v > 0 ? units_.pressure_to_si((v - 1.0) * lbm::kCs2) : 0.0;
 }
 
 Vec3 Coupler::gas_momentum() const {

@@ -104,14 +104,19 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
     from = std::max(from, inlet.get("ramp_start", 0.0) + inlet.get("ramp_time", 0.0) + 0.05);
     present.push_back(&c);
   }
+  // A case that has not reached the fluidized window yet (a CG 1 run measured over a short
+  // window) has nothing to compare: it stays in the table without statistics.
+  std::vector<const Case*> compared;
+  for (const Case* c : present)
+    if (last_time(root + "/" + c->name + "/timeseries.csv") > from) compared.push_back(c);
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string python = LBDEM_PYTHON;
   const std::array<std::string, 2> columns = {"bed_height_m", "pressure_drop_Pa"};
   std::array<std::map<std::string, std::array<double, 3>>, 2> stats;
-  for (std::size_t k = 0; k < columns.size() && !present.empty(); ++k) {
+  for (std::size_t k = 0; k < columns.size() && !compared.empty(); ++k) {
     std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column " + columns[k] +
                       " --from " + fmt(from, "%.17g");
-    for (const Case* c : present) cmd += " '" + root + "/" + c->name + "' --label " + c->name;
+    for (const Case* c : compared) cmd += " '" + root + "/" + c->name + "' --label " + c->name;
     const std::string prefix = root + "/" + columns[k];
     cmd += " --out '" + prefix + "' > '" + prefix + "_table.txt'";
     if (std::system(cmd.c_str()) != 0) {
