@@ -37,7 +37,8 @@ static_assert(moment_sums_match_order());
 /// second-order accurate (Guo, Zheng & Shi 2002, Phys. Rev. E 65, 046308, eq. 19). The sums are
 /// trees, not chains, so a vector lane is not one 19-add dependency chain; their order is fixed.
 template <bool kForced>
-inline CellMoments cell_moments(const double (&f)[kQ], const CellForce& force) {
+[[gnu::always_inline]] inline CellMoments cell_moments(const double (&f)[kQ],
+                                                       const CellForce& force) {
   const double xp = (f[1] + f[7]) + (f[9] + f[11]) + f[13];
   const double xm = (f[2] + f[8]) + (f[10] + f[12]) + f[14];
   const double rest = ((f[0] + f[3]) + (f[4] + f[5])) + ((f[6] + f[15]) + (f[16] + f[17])) + f[18];

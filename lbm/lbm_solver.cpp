@@ -249,18 +249,20 @@ void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
   const Vec3& b = settings_.body_force;
   const CellForce uniform{b.x(), b.y(), b.z()};
   if (has_porosity()) {
-    const auto sums = [&](auto policy) {
-      if (accumulate && has_velocity_sum())
+    const auto porous = [&](auto applied) {
+      using Base = decltype(applied);
+      if (accumulate && has_velocity_sum()) {
+        PorousMedium<Base, true> policy{applied, eps_.data(), alpha_.data(), beta_};
         for (int a = 0; a < 3; ++a) policy.u_sum[a] = u_sum_[std::size_t(a)].data();
-      return policy;
+        fn(policy);
+      } else {
+        fn(PorousMedium<Base>{applied, eps_.data(), alpha_.data(), beta_});
+      }
     };
     if (has_force_field())
-      fn(sums(PorousMedium<FieldForce>{
-          FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform}, eps_.data(),
-          alpha_.data(), beta_}));
+      porous(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
     else
-      fn(sums(
-          PorousMedium<UniformForce>{UniformForce{uniform}, eps_.data(), alpha_.data(), beta_}));
+      porous(UniformForce{uniform});
   } else if (has_force_field())
     fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
   else if (!b.isZero())

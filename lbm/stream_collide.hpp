@@ -37,11 +37,11 @@ inline void collide_cells(const C& coll, const Forcing& forcing, const double* c
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
     double f[kQ];
-    static_for<kQ>([&](auto q) { f[q] = in[q][i]; });
+    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = in[q][i]; });
     CellForce force;
     const CellMoments m = forcing.moments(f, n0 + i, force);
     coll.template relax<Forcing::kActive>(f, m, force);
-    static_for<kQ>([&](auto q) { out[q][i] = f[q]; });
+    static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = f[q]; });
   }
 }
 

@@ -35,7 +35,7 @@ struct Bgk {
     [[maybe_unused]] const double source = 1.0 - 0.5 * omega;
     [[maybe_unused]] const double uf =
         3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
-    static_for<kQ>([&](auto qc) {
+    static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
       const double cu = dot_c<q>(m.ux, m.uy, m.uz);
       const double feq = kW[q] * m.rho * (1.0 + 3.0 * cu + q2 * cu * cu - usq_e);

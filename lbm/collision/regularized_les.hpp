@@ -64,7 +64,7 @@ struct RegularizedLes {
   [[gnu::always_inline]] static Stress non_equilibrium_stress(const double (&f)[kQ],
                                                               const CellMoments& m) {
     Stress s{-0.0, -0.0, -0.0, -0.0, -0.0, -0.0};
-    static_for<kQ>([&](auto qc) {
+    static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
       constexpr int cx = kCx[q], cy = kCy[q], cz = kCz[q];
       if constexpr (cx != 0) s.xx += f[q];
@@ -147,7 +147,7 @@ struct RegularizedLes {
     [[maybe_unused]] double gx = 0, gy = 0, gz = 0;  // 3 (1 - omega) (j - rho u) + 3 source F
     if constexpr (kForced) {
       double jx = -0.0, jy = -0.0, jz = -0.0;
-      static_for<kQ>([&](auto qc) {
+      static_for<kQ>([&](auto qc) LBDEM_INLINE {
         constexpr int q = decltype(qc)::value;
         if constexpr (kCx[q] != 0) jx += kCx[q] * f[q];
         if constexpr (kCy[q] != 0) jy += kCy[q] * f[q];
@@ -158,7 +158,7 @@ struct RegularizedLes {
       gy = a * (jy - m.rho * m.uy) + c * force.fy;
       gz = a * (jz - m.rho * m.uz) + c * force.fz;
     }
-    static_for<kQ>([&](auto qc) {
+    static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
       constexpr int cx = kCx[q], cy = kCy[q], cz = kCz[q];
       const double cu = dot_c<q>(m.ux, m.uy, m.uz);

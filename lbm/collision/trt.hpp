@@ -50,7 +50,7 @@ struct Trt {
     if constexpr (kForced) d0 += src_p * kW[0] * uf;
     f[0] -= d0;
     // Pairs (q, q + 1) with c_{q+1} = -c_q (d3q19.hpp).
-    static_for<(kQ - 1) / 2>([&](auto kc) {
+    static_for<(kQ - 1) / 2>([&](auto kc) LBDEM_INLINE {
       constexpr int q = 2 * decltype(kc)::value + 1, o = q + 1;
       const double cu = dot_c<q>(m.ux, m.uy, m.uz);
       const double eq_p = kW[q] * m.rho * (1.0 + q2 * cu * cu - usq);
