@@ -90,6 +90,10 @@ void LbmSolver::set_outlet_density(int body, double density) {
 }
 
 void LbmSolver::set_cell(int x, int y, int z, int body) {
+  if (body != 0)
+    for (const MassSource& m : mass_sources_)
+      if (m.x == x && m.y == y && m.z == z)
+        throw std::invalid_argument("a mass source cell cannot turn solid");
   if (body < 0 || body > body_count()) throw std::invalid_argument("unknown body id");
   flags_.set(x, y, z, CellFlag(body));
   links_dirty_ = true;
@@ -288,7 +292,38 @@ void LbmSolver::step() {
     b.load = b.outlet_density > 0
                  ? apply_anti_bounce_back(pdf_, state_, b.links, b.outlet, b.origin)
                  : apply_bounce_back(pdf_, state_, b.links, b.origin);
+  add_mass_sources();
   ++steps_;
+}
+
+void LbmSolver::set_mass_sources(std::vector<MassSource> sources) {
+  const Grid& g = grid();
+  for (const MassSource& m : sources) {
+    const bool inside =
+        m.x >= 0 && m.x < g.nx() && m.y >= 0 && m.y < g.ny() && m.z >= 0 && m.z < g.nz();
+    if (!inside || !flags_.fluid(g.index(m.x, m.y, m.z)))
+      throw std::invalid_argument("mass source at cell (" + std::to_string(m.x) + ", " +
+                                  std::to_string(m.y) + ", " + std::to_string(m.z) +
+                                  ") is not an interior fluid cell");
+    if (!std::isfinite(m.mass)) throw std::invalid_argument("mass source of non-finite mass");
+  }
+  mass_sources_ = std::move(sources);
+}
+
+double LbmSolver::mass_source_rate() const {
+  double sum = 0;
+  for (const MassSource& m : mass_sources_) sum += m.mass;
+  return sum;
+}
+
+void LbmSolver::add_mass_sources() {
+  // The populations the next step reads (aa_pattern.hpp); the solver owns them, so the cast only
+  // undoes read_pointers' const. A few cells: serial, in list order (deterministic).
+  for (const MassSource& m : mass_sources_) {
+    const double* in[kQ];
+    read_pointers(pdf_, state_, m.x, m.y, m.z, in);
+    for (int q = 0; q < kQ; ++q) *const_cast<double*>(in[q]) += kW[q] * m.mass;
+  }
 }
 
 void LbmSolver::load_state(const std::vector<double>& populations, AaState s, long steps) {

@@ -120,6 +120,18 @@ class LbmSolver {
   /// the first bad cell), force density [lattice units]. Solid cells are skipped.
   void set_porosity_field(std::span<const double> eps, std::span<const double> alpha);
   void set_force_field(std::span<const Vec3> force);
+  /// Mass sources: every step adds `mass` [lattice units] to each listed fluid cell as resting
+  /// equilibrium populations (w_q mass), after the collision and the boundary links, so that
+  /// total_mass() grows by exactly their sum per step and the momentum is untouched (a source that
+  /// carries momentum pairs with the force field). Replaces the previous list; throws
+  /// std::invalid_argument for a cell that is not an interior fluid cell or a non-finite mass.
+  struct MassSource {
+    int x, y, z;
+    double mass;
+  };
+  void set_mass_sources(std::vector<MassSource> sources);
+  /// Sum of the sources' mass per step [lattice units].
+  double mass_source_rate() const;
   /// Fluid fraction over interior cells in compact order (1 without porosity, 0 in solids).
   void porosity(std::vector<double>& eps) const;
 
@@ -159,6 +171,7 @@ class LbmSolver {
     PressureOutlet outlet;      // its velocity samples, built with the links
   };
   void rebuild_links();
+  void add_mass_sources();
   void set_wall_velocity_terms(Body& b);
   /// Calls fn(forcing) with the cheapest policy that represents the current forces; with
   /// `accumulate`, a porous policy also adds to the velocity sums (the collision of a step only).
@@ -171,6 +184,7 @@ class LbmSolver {
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};
   std::array<std::vector<double>, 3> force_;
+  std::vector<MassSource> mass_sources_;
   std::vector<double> eps_, alpha_;                   // per storage cell, when porosity is enabled
   mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
   double beta_ = 0;
