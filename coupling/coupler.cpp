@@ -115,6 +115,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   for (std::size_t c = 0; c < eps_.size(); ++c) {
     alpha_[c] = cell_scalar_[c] / eps_[c] * drag_to_lattice;
     force_lat_[c] = force_to_lattice * (cell_vec_[c] - (1 - eps_[c]) * s_.gas_weight);
+    if (!source_lat_.empty()) force_lat_[c] += source_lat_[c];
   }
   gas_.set_porosity_field(eps_, alpha_);
   gas_.set_force_field(force_lat_);

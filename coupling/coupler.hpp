@@ -86,6 +86,11 @@ class Coupler {
   /// Sets p.external to the interval's mean gas force; p must be the arrays begin_interval saw.
   const ExchangeReport& end_interval(dem::ParticleArrays& p);
 
+  /// A force density the gas feels besides the exchange (compact order, lattice units; e.g. the
+  /// jet mill's nozzles): two-way coupling rewrites the gas's force field every interval and adds
+  /// this to it. Empty: none.
+  void set_gas_source(std::vector<Vec3> force) { source_lat_ = std::move(force); }
+
   /// The gas fraction of the last begin_interval (compact order; 1 in one-way runs only where no
   /// particle is).
   const std::vector<double>& eps() const { return eps_; }
@@ -101,7 +106,7 @@ class Coupler {
   ParticleKernel kernel_;
   int steps_ = 0, steps_done_ = 0;
   std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_;
-  std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_;
+  std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_, source_lat_;
   ExchangeReport report_;
 };
 

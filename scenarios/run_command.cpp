@@ -17,6 +17,7 @@
 #include "scenarios/box/box.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
+#include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
@@ -45,6 +46,9 @@ const std::vector<ScenarioEntry>& scenarios() {
       {"fluidized_bed",
        "gas-fluidized bed of fine (cohesive) particles, original or coarse-grained (DESIGN 1.1)",
        "scenarios/fluidized_bed/presets/default.toml", make<FluidizedBedScenario>},
+      {"jet_mill",
+       "spiral jet mill: LES gas vortex driven by grinding jets, particles coming (DESIGN 1.3)",
+       "scenarios/jet_mill/presets/default.toml", make<JetMillScenario>},
       {"rheometer",
        "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell, DESIGN 1.2)",
        "scenarios/rheometer/presets/default.toml", make<RheometerScenario>},

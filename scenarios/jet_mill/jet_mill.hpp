@@ -1,0 +1,45 @@
+#pragma once
+// The spiral jet mill (DESIGN §1.3; Scott, Borissova, Di Renzo & Ghadiri): a flat cylindrical
+// chamber, grinding jets at an angle to the wall tangent (jet_mill_geometry.hpp: the
+// notional-nozzle source model and its limits), a vortex finder through the top plate, an LES gas.
+// Built on the box (BoxScenario): [box] is the chamber's bounding box, [fluid] the gas (collision =
+// "les"), [jet_mill] the chamber and nozzles; the box's walls, particles, inflow and [coupling]
+// work as there. timeseries.csv adds
+//   jet_mass_flow_kg_s                 the nozzles' summed mass flow (exact, the sources),
+//   outlet_mass_flow_kg_s              gas leaving through the vortex finder,
+//   gas_tangential_speed_mid_m_s       mean u_theta over the cells at mid-radius (|r - R/2| < dx),
+//   gas_radial_speed_mid_m_s           mean u_r there (negative: inwards),
+//   gas_max_speed_m_s                  the largest cell speed,
+// and the banner the jets' Reynolds number, mass flow, momentum flux, notional source radius, and
+// cells across a nozzle, a source, the chamber height and diameter.
+#include "scenarios/box/box.hpp"
+#include "scenarios/jet_mill/jet_mill_geometry.hpp"
+
+namespace lbdem::scenarios {
+
+class JetMillScenario : public Scenario {
+ public:
+  explicit JetMillScenario(const Config& cfg);
+  void banner(Log& log) const override { box_.banner(log); }
+  int run(const RunContext& ctx) override { return box_.run(ctx); }
+  const OutputSettings& output() const override { return box_.output(); }
+  BoxScenario& box() { return box_; }
+  const JetMillGeometry& geometry() const { return geometry_; }
+  int outlet_body() const { return outlet_; }
+  /// Gas leaving through the outlet in the last gas step [kg/s].
+  double outlet_mass_flow() const;
+  /// The nozzles' mass flow as injected [kg/s].
+  double jet_mass_flow() const;
+  /// Mean tangential and radial gas velocity over the cells at radius r (|r_c - r| < dx) [m/s].
+  std::array<double, 2> ring_velocity(double r) const;
+
+ private:
+  void mill_banner(Log& log) const;
+
+  BoxScenario box_;
+  JetMillGeometry geometry_;
+  JetSources sources_;
+  int outlet_ = 0;
+};
+
+}  // namespace lbdem::scenarios

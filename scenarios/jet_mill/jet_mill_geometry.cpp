@@ -1,0 +1,152 @@
+#include "scenarios/jet_mill/jet_mill_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "lbm/geometry/cylinder.hpp"
+#include "lbm/geometry/lattice_frame.hpp"
+#include "scenarios/common/fluid_config.hpp"
+
+namespace lbdem::scenarios {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kSamples = 4;  // per cell and axis, for the source weights
+}  // namespace
+
+bool JetMillGeometry::inside(const Vec3& x) const {
+  const double dx = x.x() - axis.x(), dy = x.y() - axis.y();
+  return dx * dx + dy * dy <= radius * radius;
+}
+
+JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
+  JetMillGeometry g;
+  const Vec3 hi = f.lo + f.dx * Vec3(f.cells[0], f.cells[1], f.cells[2]);
+  const double wx = hi.x() - f.lo.x(), wy = hi.y() - f.lo.y();
+  if (std::abs(wx - wy) > 0.5 * f.dx)
+    throw InputError("box.hi", "[" + to_text(hi.x()) + ", " + to_text(hi.y()) + ", ...]",
+                     "the jet mill's box is the chamber's bounding box, square in x and y",
+                     "give box.lo = [-R, -R, 0] and box.hi = [R, R, H]");
+  g.radius = 0.5 * wx;
+  g.height = hi.z() - f.lo.z();
+  g.axis = Vec3(0.5 * (f.lo.x() + hi.x()), 0.5 * (f.lo.y() + hi.y()), f.lo.z());
+  g.outlet_radius = section.get("outlet_radius", 0.2 * g.radius,
+                                Range::closed(f.dx, 0.9 * g.radius,
+                                              "give the vortex finder's radius in m, at least "
+                                              "one cell and below the chamber radius"));
+  const Config n = section.section("nozzles");
+  const int count = int(n.get_int("count", 4, Range::closed(1, 64)));
+  const double angle = n.get("angle_deg", 40.0,
+                             Range::closed(0, 90, "give the angle to the wall tangent in degrees"));
+  const double first = n.get("first_deg", 0.0, Range::closed(-360, 360));
+  const double z = n.get("height", 0.5 * g.height,
+                         Range::closed(0, g.height, "give the axis height above the floor in m"));
+  const double d = n.require("diameter", Range::positive("give the nozzle diameter in m"));
+  if (d >= g.height)
+    throw InputError(n.path("diameter"), to_text(d), "the nozzle is as tall as the chamber",
+                     "give a diameter below the chamber height " + to_text(g.height) + " m");
+  const double u = n.require("speed", Range::positive("give the jet exit speed in m/s"));
+  const double mdot = n.get("mass_flow", f.density * u * kPi * d * d / 4,
+                            Range::positive("give the mass flow per nozzle in kg/s"));
+  const double u_cap = f.max_speed;
+  for (int k = 0; k < count; ++k) {
+    const double th = (first + 360.0 * k / count) * kPi / 180.0;
+    const Vec3 radial(std::cos(th), std::sin(th), 0.0);
+    const Vec3 tangent(-std::sin(th), std::cos(th), 0.0);  // counter-clockwise from +z
+    Nozzle q;
+    q.exit = g.axis + g.radius * radial + z * Vec3::UnitZ();
+    q.dir = std::cos(angle * kPi / 180.0) * tangent - std::sin(angle * kPi / 180.0) * radial;
+    q.diameter = d;
+    q.speed = u;
+    q.mass_flow = mdot;
+    q.source_radius =
+        std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
+    g.nozzles.push_back(q);
+  }
+  return g;
+}
+
+int build_chamber(lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeometry& g) {
+  const lbm::LatticeFrame frame{f.lo, f.dx};
+  const int chamber = gas.add_body("chamber");
+  lbm::Cylinder wall;
+  wall.axis_point = g.axis;
+  wall.radius = g.radius;
+  lbm::mark_cylinder(gas, frame, wall, lbm::SolidSide::outside, chamber);
+  // The vortex finder: the top plate's ghost cells over r < outlet_radius, at the reference
+  // pressure (density 1: the gauge pressure of the outlet is zero).
+  const int outlet = gas.add_outlet("outlet", 1.0);
+  const lbm::Grid& grid = gas.grid();
+  const int top = grid.nz();
+  for (int y = -1; y <= grid.ny(); ++y)
+    for (int x = -1; x <= grid.nx(); ++x) {
+      const Vec3 c = f.cell_centre(x, y, top);
+      const double rx = c.x() - g.axis.x(), ry = c.y() - g.axis.y();
+      if (rx * rx + ry * ry < g.outlet_radius * g.outlet_radius) gas.set_cell(x, y, top, outlet);
+    }
+  return outlet;
+}
+
+JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeometry& g) {
+  const lbm::Grid& grid = gas.grid();
+  const lbm::LatticeUnits units = f.units();
+  JetSources out;
+  out.force.assign(std::size_t(grid.nx()) * grid.ny() * grid.nz(), Vec3::Zero());
+  const double cell_volume = f.dx * f.dx * f.dx;
+  for (std::size_t k = 0; k < g.nozzles.size(); ++k) {
+    const Nozzle& q = g.nozzles[k];
+    const double rs = q.source_radius, len = 2 * rs;
+    // Cells whose box meets the source's bounding box.
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      const double a0 = std::min(q.exit[a], q.exit[a] + len * q.dir[a]) - rs;
+      const double a1 = std::max(q.exit[a], q.exit[a] + len * q.dir[a]) + rs;
+      lo[a] = std::max(0, int(std::floor((a0 - f.lo[a]) / f.dx)));
+      hi[a] = std::min(f.cells[std::size_t(a)] - 1, int(std::floor((a1 - f.lo[a]) / f.dx)));
+    }
+    struct Weighted {
+      int x, y, z;
+      double w;
+    };
+    std::vector<Weighted> cells;
+    double total = 0;
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          if (!gas.flags().fluid(grid.index(x, y, z))) continue;
+          int in = 0;
+          for (int sz = 0; sz < kSamples; ++sz)
+            for (int sy = 0; sy < kSamples; ++sy)
+              for (int sx = 0; sx < kSamples; ++sx) {
+                const Vec3 p =
+                    f.lo + f.dx * Vec3(x + (sx + 0.5) / kSamples, y + (sy + 0.5) / kSamples,
+                                       z + (sz + 0.5) / kSamples);
+                const Vec3 r = p - q.exit;
+                const double s = r.dot(q.dir);
+                if (s < 0 || s > len || (r - s * q.dir).squaredNorm() > rs * rs) continue;
+                if (g.inside(p)) ++in;
+              }
+          if (in == 0) continue;
+          const double w = double(in) / (kSamples * kSamples * kSamples);
+          cells.push_back({x, y, z, w});
+          total += w;
+        }
+    if (total <= 0)
+      throw InputError("jet_mill.nozzles", "nozzle " + std::to_string(k + 1),
+                       "its notional source holds no fluid cell",
+                       "refine fluid.dx or move the nozzle (jet_mill.nozzles.height)");
+    const double mass_per_step = q.mass_flow * f.dt / (f.density * cell_volume);  // lattice
+    const Vec3 force_si = q.momentum_flux() * q.dir / cell_volume;                // N/m^3 per w
+    for (const Weighted& c : cells) {
+      const double share = c.w / total;
+      out.mass.push_back({c.x, c.y, c.z, mass_per_step * share});
+      Vec3& fc = out.force[std::size_t(grid.compact_index(c.x, c.y, c.z))];
+      for (int a = 0; a < 3; ++a) fc[a] += units.force_density_to_lattice(force_si[a] * share);
+    }
+    out.cells_per_nozzle.push_back(int(cells.size()));
+  }
+  return out;
+}
+
+}  // namespace lbdem::scenarios

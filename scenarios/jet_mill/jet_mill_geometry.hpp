@@ -1,0 +1,77 @@
+#pragma once
+// The spiral jet mill's gas geometry (DESIGN §1.3; Scott, Borissova, Di Renzo & Ghadiri): a flat
+// cylindrical chamber with grinding nozzles on its wall and a central outlet (vortex finder)
+// through the top plate, all in SI, and the jets' sources on the lattice.
+//
+// Jet model (notional nozzle with mass and momentum sources). Real grinding nozzles are choked and
+// their jets under-expanded and supersonic; a weakly compressible LBM holds lattice speeds of about
+// 0.1 only. Each jet is therefore given by what drives the mill, its mass flow mdot and momentum
+// flux J = mdot U (U: the exit speed of the preset, the fully expanded speed of a real nozzle), and
+// both enter the gas exactly, whatever the grid:
+//   - mass: mdot dt per gas step, as resting gas (lbm::LbmSolver::set_mass_sources),
+//   - momentum: a force density whose integral is J (the lattice's Guo forcing),
+// spread over a notional source, a cylinder on the nozzle axis from the exit at the wall, of radius
+//   r_s = max(d/2, sqrt(J / (pi rho U_cap^2)))
+// and length 2 r_s, U_cap the gas speed the time step was set for (fluid.max_speed): a jet with the
+// same momentum flux at the speed the lattice can carry (the pseudo-diameter idea of Birch et al.
+// 1984, Combust. Sci. Technol. 36, 249, and Ewan & Moodie 1986, ibid. 45, 275, who conserve mass
+// and momentum of an under-expanded jet across its shock cells). Beyond a few diameters a turbulent
+// jet depends on J alone (momentum-conserving self-similar jet: Pope, Turbulent Flows, §5.1), and
+// the mill's vortex on the jets' angular momentum J R cos(angle) and on mdot (its radial outflow).
+// Limits: the jet's core (a few nozzle diameters) is wider and slower than the real one, so
+// particles entrained close to the nozzle see a lower peak speed than in a compressible solver;
+// the gas density is uniform (no expansion cooling); the source's cells are weighted by the part
+// of each cell (4^3 samples) that lies in the notional cylinder and in the chamber, normalised to
+// 1 per nozzle, so the injected mass and momentum are exact on any grid.
+#include "core/config.hpp"
+#include "core/types.hpp"
+#include "lbm/lbm_solver.hpp"
+#include "lbm/units.hpp"
+
+#include <string>
+#include <vector>
+
+namespace lbdem::scenarios {
+
+struct FluidConfig;
+
+struct Nozzle {
+  Vec3 exit = Vec3::Zero();  // centre of the exit, on the chamber wall [m]
+  Vec3 dir = Vec3::UnitX();  // unit jet axis, into the chamber
+  double diameter = 0;       // [m]
+  double speed = 0;          // exit speed U [m/s]
+  double mass_flow = 0;      // mdot [kg/s]
+  double source_radius = 0;  // notional source radius r_s [m]
+  double momentum_flux() const { return mass_flow * speed; }  // J [N]
+};
+
+struct JetMillGeometry {
+  Vec3 axis = Vec3::Zero();  // the chamber axis at the floor [m] (the box's x-y centre, z_lo)
+  double radius = 0;         // chamber [m]
+  double height = 0;         // [m]
+  double outlet_radius = 0;  // vortex finder in the top plate [m]
+  std::vector<Nozzle> nozzles;
+  /// Whether SI point x lies inside the chamber's cylinder (the plates are the box's faces).
+  bool inside(const Vec3& x) const;
+};
+
+/// Reads [jet_mill] against the gas ([fluid] already read: the box must be the chamber's bounding
+/// box). Keys: outlet_radius [m]; [jet_mill.nozzles]: count, angle_deg (to the wall tangent),
+/// first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter [m], speed
+/// [m/s], mass_flow [kg/s per nozzle; default rho U pi d^2 / 4]. The jets turn counter-clockwise
+/// seen from +z. Throws InputError naming the key.
+JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& fluid);
+
+/// The lattice side of the geometry: solid cells outside the chamber (body "chamber"), the outlet
+/// cells in the top plate's ghost layer (a density outlet at the reference pressure), and the jets'
+/// mass sources and force density (lattice units, compact order). Returns the outlet's body id.
+struct JetSources {
+  std::vector<lbm::LbmSolver::MassSource> mass;  // per gas step [lattice units]
+  std::vector<Vec3> force;                       // per interior cell, compact order [lattice]
+  std::vector<int> cells_per_nozzle;             // cells each source touches
+};
+int build_chamber(lbm::LbmSolver& gas, const FluidConfig& fluid, const JetMillGeometry& g);
+JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& fluid,
+                       const JetMillGeometry& g);
+
+}  // namespace lbdem::scenarios
