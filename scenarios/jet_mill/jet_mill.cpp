@@ -27,16 +27,23 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   if (box_.coupler()) box_.coupler()->set_gas_source(sources_.force);
 
   BoxScenario::Extra extra;
-  extra.columns = {"jet_mass_flow_kg_s", "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
-                   "gas_radial_speed_mid_m_s", "gas_max_speed_m_s"};
+  extra.columns = {
+      "jet_mass_flow_kg_s",       "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
+      "gas_radial_speed_mid_m_s", "gas_max_speed_m_s",     "gas_angular_momentum_z_Nms"};
   extra.values = [this](const dem::DemSolver&) {
-    const auto ring = ring_velocity(0.5 * geometry_.radius);
     std::vector<Vec3> u;
+    std::vector<double> rho;
     box_.gas()->velocity(u);
+    box_.gas()->density(rho);
+    const auto ring = ring_velocity(u, 0.5 * geometry_.radius);
     double umax = 0;
     for (const Vec3& v : u) umax = std::max(umax, v.norm());
-    return std::vector<double>{jet_mass_flow(), outlet_mass_flow(), ring[0], ring[1],
-                               box_.fluid().units().velocity_to_si(umax)};
+    return std::vector<double>{jet_mass_flow(),
+                               outlet_mass_flow(),
+                               ring[0],
+                               ring[1],
+                               box_.fluid().units().velocity_to_si(umax),
+                               angular_momentum(u, rho)};
   };
   extra.banner = [this](Log& log) { mill_banner(log); };
   box_.set_extra(std::move(extra));
@@ -51,11 +58,27 @@ double JetMillScenario::jet_mass_flow() const {
   return box_.fluid().units().mass_flow_to_si(box_.gas()->mass_source_rate());
 }
 
-std::array<double, 2> JetMillScenario::ring_velocity(double r) const {
+double JetMillScenario::angular_momentum(const std::vector<Vec3>& u,
+                                         const std::vector<double>& rho) const {
   const FluidConfig& f = box_.fluid();
   const lbm::LbmSolver& gas = *box_.gas();
-  std::vector<Vec3> u;
-  gas.velocity(u);
+  const lbm::Grid& g = gas.grid();
+  const lbm::LatticeUnits units = f.units();
+  double l = 0;  // serial, in cell order: the same sum for any thread count
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        if (!gas.flags().fluid(g.index(x, y, z))) continue;
+        const std::size_t c = std::size_t(g.compact_index(x, y, z));
+        const Vec3 r = f.cell_centre(x, y, z) - geometry_.axis;
+        l += rho[c] * (r.x() * u[c].y() - r.y() * u[c].x());
+      }
+  return l * units.rho * units.velocity_to_si(1.0) * f.dx * f.dx * f.dx;
+}
+
+std::array<double, 2> JetMillScenario::ring_velocity(const std::vector<Vec3>& u, double r) const {
+  const FluidConfig& f = box_.fluid();
+  const lbm::LbmSolver& gas = *box_.gas();
   const lbm::Grid& g = gas.grid();
   double ut = 0, ur = 0;
   long n = 0;

@@ -10,6 +10,7 @@
 //   gas_tangential_speed_mid_m_s       mean u_theta over the cells at mid-radius (|r - R/2| < dx),
 //   gas_radial_speed_mid_m_s           mean u_r there (negative: inwards),
 //   gas_max_speed_m_s                  the largest cell speed,
+//   gas_angular_momentum_z_Nms         about the chamber axis (the jets' torque spins it up),
 // and the banner the jets' Reynolds number, mass flow, momentum flux, notional source radius, and
 // cells across a nozzle, a source, the chamber height and diameter.
 #include "scenarios/box/box.hpp"
@@ -30,8 +31,11 @@ class JetMillScenario : public Scenario {
   double outlet_mass_flow() const;
   /// The nozzles' mass flow as injected [kg/s].
   double jet_mass_flow() const;
-  /// Mean tangential and radial gas velocity over the cells at radius r (|r_c - r| < dx) [m/s].
-  std::array<double, 2> ring_velocity(double r) const;
+  /// Mean tangential and radial gas velocity [m/s] over the cells at radius r (|r_c - r| < dx),
+  /// from the velocity field u (lattice units, compact order).
+  std::array<double, 2> ring_velocity(const std::vector<Vec3>& u, double r) const;
+  /// The gas's angular momentum about the chamber axis [N m s] from u and rho (lattice, compact).
+  double angular_momentum(const std::vector<Vec3>& u, const std::vector<double>& rho) const;
 
  private:
   void mill_banner(Log& log) const;

@@ -15,6 +15,18 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 4;  // per cell and axis, for the source weights
 }  // namespace
 
+namespace {
+double start_offset(const Nozzle& q, const Vec3& axis, double dx) {
+  // Far enough along the axis that the whole source disc clears the wall by 1.5 cells: the disc's
+  // edge nearest the wall lies s sin(a) - r_s cos(a) from it, a the angle to the tangent.
+  Vec3 radial = q.exit - axis;
+  radial.z() = 0;
+  const double sin_a = std::abs(q.dir.dot(radial.normalized()));
+  const double cos_a = std::sqrt(std::max(0.0, 1 - sin_a * sin_a));
+  return (q.source_radius * cos_a + 1.5 * dx) / std::max(sin_a, 1e-3);
+}
+}  // namespace
+
 bool JetMillGeometry::inside(const Vec3& x) const {
   const double dx = x.x() - axis.x(), dy = x.y() - axis.y();
   return dx * dx + dy * dy <= radius * radius;
@@ -97,11 +109,12 @@ JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const Je
   for (std::size_t k = 0; k < g.nozzles.size(); ++k) {
     const Nozzle& q = g.nozzles[k];
     const double rs = q.source_radius, len = 2 * rs;
+    const double s0 = start_offset(q, g.axis, f.dx);
     // Cells whose box meets the source's bounding box.
     int lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
-      const double a0 = std::min(q.exit[a], q.exit[a] + len * q.dir[a]) - rs;
-      const double a1 = std::max(q.exit[a], q.exit[a] + len * q.dir[a]) + rs;
+      const double b0 = q.exit[a] + s0 * q.dir[a], b1 = b0 + len * q.dir[a];
+      const double a0 = std::min(b0, b1) - rs, a1 = std::max(b0, b1) + rs;
       lo[a] = std::max(0, int(std::floor((a0 - f.lo[a]) / f.dx)));
       hi[a] = std::min(f.cells[std::size_t(a)] - 1, int(std::floor((a1 - f.lo[a]) / f.dx)));
     }
@@ -124,7 +137,7 @@ JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const Je
                                        z + (sz + 0.5) / kSamples);
                 const Vec3 r = p - q.exit;
                 const double s = r.dot(q.dir);
-                if (s < 0 || s > len || (r - s * q.dir).squaredNorm() > rs * rs) continue;
+                if (s < s0 || s > s0 + len || (r - s * q.dir).squaredNorm() > rs * rs) continue;
                 if (g.inside(p)) ++in;
               }
           if (in == 0) continue;
