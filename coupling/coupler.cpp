@@ -121,6 +121,13 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   gas_.set_force_field(force_lat_);
 }
 
+void Coupler::set_gas_source(std::vector<Vec3> force) {
+  const lbm::Grid& g = gas_.grid();
+  if (!force.empty() && force.size() != std::size_t(g.nx()) * g.ny() * g.nz())
+    throw std::invalid_argument("coupling: a gas source needs one force per interior cell");
+  source_lat_ = std::move(force);
+}
+
 void Coupler::before_gas_step() {
   if (steps_done_ >= steps_)
     throw std::logic_error("coupling: more gas steps than begin_interval announced");

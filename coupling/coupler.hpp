@@ -89,7 +89,7 @@ class Coupler {
   /// A force density the gas feels besides the exchange (compact order, lattice units; e.g. the
   /// jet mill's nozzles): two-way coupling rewrites the gas's force field every interval and adds
   /// this to it. Empty: none.
-  void set_gas_source(std::vector<Vec3> force) { source_lat_ = std::move(force); }
+  void set_gas_source(std::vector<Vec3> force);
 
   /// The gas fraction of the last begin_interval (compact order; 1 in one-way runs only where no
   /// particle is).

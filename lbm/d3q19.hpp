@@ -30,13 +30,14 @@ constexpr int opposite(int q) {
   return q == 0 ? 0 : (q % 2 ? q + 1 : q - 1);
 }
 
-/// Calls body(std::integral_constant<int, q>{}) for q = 0 .. N-1, so that c_q and w_q are
-/// compile-time constants in the body and products with 0 and +-1 disappear before vectorising.
 /// Forces a lambda to be inlined: `[&](auto q) LBDEM_INLINE { ... }`. A call left in an omp simd
 /// cell loop makes it run scalar. GCC 12 left calls to cell_moments and to the TRT pair body with
-/// forcing, and the porous kernel ran at 11 MLUPS against 47 for BGK (bench/lbm_bench --porous).
+/// forcing, and the porous kernel ran at 11 MLUPS against 47 for BGK (bench/lbm_bench --porous,
+/// 48^3, one thread of a busy machine; 42 once the velocity sums were a compile-time choice).
 #define LBDEM_INLINE __attribute__((always_inline))
 
+/// Calls body(std::integral_constant<int, q>{}) for q = 0 .. N-1, so that c_q and w_q are
+/// compile-time constants in the body and products with 0 and +-1 disappear before vectorising.
 template <int N, class Body>
 [[gnu::always_inline]] inline void static_for(Body&& body) {
   [&]<std::size_t... Q>(std::index_sequence<Q...>) LBDEM_INLINE {

@@ -93,7 +93,9 @@ void LbmSolver::set_cell(int x, int y, int z, int body) {
   if (body != 0)
     for (const MassSource& m : mass_sources_)
       if (m.x == x && m.y == y && m.z == z)
-        throw std::invalid_argument("a mass source cell cannot turn solid");
+        throw std::invalid_argument("cell (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
+                                    std::to_string(z) +
+                                    ") holds a mass source and cannot turn solid");
   if (body < 0 || body > body_count()) throw std::invalid_argument("unknown body id");
   flags_.set(x, y, z, CellFlag(body));
   links_dirty_ = true;
@@ -305,7 +307,10 @@ void LbmSolver::set_mass_sources(std::vector<MassSource> sources) {
       throw std::invalid_argument("mass source at cell (" + std::to_string(m.x) + ", " +
                                   std::to_string(m.y) + ", " + std::to_string(m.z) +
                                   ") is not an interior fluid cell");
-    if (!std::isfinite(m.mass)) throw std::invalid_argument("mass source of non-finite mass");
+    if (!std::isfinite(m.mass))
+      throw std::invalid_argument("mass source at cell (" + std::to_string(m.x) + ", " +
+                                  std::to_string(m.y) + ", " + std::to_string(m.z) +
+                                  ") has a non-finite mass");
   }
   mass_sources_ = std::move(sources);
 }

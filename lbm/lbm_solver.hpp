@@ -7,7 +7,7 @@
 // A step: the velocity next to each outlet (open_boundary.hpp), the kernel (stream_collide.hpp)
 // for the operator and forcing in use, then each body's links: bounce-back for walls and velocity
 // inlets (bounce_back.hpp), anti-bounce-back for density outlets; they also give its
-// momentum-exchange force and the mass it passed to the fluid.
+// momentum-exchange force and the mass it passed to the fluid. Last, the mass sources.
 #include "core/types.hpp"
 #include "lbm/aa_pattern.hpp"
 #include "lbm/boundary/bounce_back.hpp"
@@ -120,7 +120,8 @@ class LbmSolver {
   /// the first bad cell), force density [lattice units]. Solid cells are skipped.
   void set_porosity_field(std::span<const double> eps, std::span<const double> alpha);
   void set_force_field(std::span<const Vec3> force);
-  /// Mass sources: every step adds `mass` [lattice units] to each listed fluid cell as resting
+  /// Mass sources: every step adds `mass` [lattice units; negative: a sink, which must not drain
+  /// the cell] to each listed fluid cell as resting
   /// equilibrium populations (w_q mass), after the collision and the boundary links, so that
   /// total_mass() grows by exactly their sum per step and the momentum is untouched (a source that
   /// carries momentum pairs with the force field). Replaces the previous list; throws
@@ -143,7 +144,8 @@ class LbmSolver {
   /// Mass that entered the fluid through the body's links during the last step (negative:
   /// leaving) [lattice units, mass per step]: the inflow of an inlet, minus the outflow of an
   /// outlet; 0 for a wall at rest, round-off for one moving in its own plane. Over steps, the
-  /// change of total_mass() is the sum of these over all bodies, to round-off.
+  /// change of total_mass() is the sum of these over all bodies plus mass_source_rate(), to
+  /// round-off.
   double mass_flow(int body) const { return bodies_[std::size_t(body - 1)].load.mass; }
   CellMoments moments(int x, int y, int z) const;
   /// Fields over interior cells in compact order; solid cells read 0.

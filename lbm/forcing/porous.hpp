@@ -35,7 +35,7 @@ namespace lbdem::lbm {
 
 /// Base: the applied-force policy (guo.hpp: UniformForce or FieldForce). kSum: add to the velocity
 /// sums; a compile-time choice, since a store under a run-time test kept GCC 12 from vectorising
-/// the cell loop (13 against 47 MLUPS, bench/lbm_bench --porous).
+/// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous).
 template <class Base, bool kSum = false>
 struct PorousMedium {
   static constexpr bool kActive = true;

@@ -10,10 +10,18 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   if (!box_.gas())
     throw InputError("fluid", "", "a jet mill needs its gas",
                      "add a [fluid] table (see scenarios/jet_mill/presets/default.toml)");
+  // Particles come with the next step of issue 11: the DEM's chamber walls, the feed, the outlet's
+  // removal, and a coupler built after the chamber's cells (its kernel masks solids when built).
+  for (const char* key : {"coupling", "fill", "particle", "inflow", "walls", "materials"})
+    if (cfg.has(key))
+      throw InputError(key, "", "the jet mill runs its gas only so far (particles: next step)",
+                       "remove [" + std::string(key) + "]");
   const FluidConfig& f = box_.fluid();
+  static const char* kFaces[6] = {"x_lo", "x_hi", "y_lo", "y_hi", "z_lo", "z_hi"};
   for (int a = 0; a < 6; ++a)
     if (f.faces[std::size_t(a)].kind != "wall")
-      throw InputError("fluid.faces", f.faces[std::size_t(a)].kind,
+      throw InputError(std::string("fluid.faces.") + kFaces[a],
+                       "\"" + f.faces[std::size_t(a)].kind + "\"",
                        "the jet mill's chamber is closed: the plates are walls, the side is the "
                        "chamber's cylinder, the outlet is cut into the top plate",
                        "leave fluid.faces out (all walls)");
@@ -123,8 +131,8 @@ void JetMillScenario::mill_banner(Log& log) const {
   log.derived("momentum flux per nozzle J", q.momentum_flux(), "N", "(mdot U)");
   log.derived("notional source radius r_s", q.source_radius, "m",
               "(" + to_text(q.source_radius / f.dx) + " cells; speed at r_s about " +
-                  to_text(std::sqrt(q.momentum_flux() / (3.14159265358979 * f.density *
-                                                         q.source_radius * q.source_radius))) +
+                  to_text(std::sqrt(q.momentum_flux() /
+                                    (kPi * f.density * q.source_radius * q.source_radius))) +
                   " m/s)");
   log.derived("source cells per nozzle", double(sources_.cells_per_nozzle.front()), "",
               "(mass and momentum exact on any grid: jet_mill_geometry.hpp)");

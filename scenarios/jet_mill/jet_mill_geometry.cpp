@@ -11,14 +11,13 @@
 namespace lbdem::scenarios {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 4;  // per cell and axis, for the source weights
-}  // namespace
 
-namespace {
 double start_offset(const Nozzle& q, const Vec3& axis, double dx) {
   // Far enough along the axis that the whole source disc clears the wall by 1.5 cells: the disc's
-  // edge nearest the wall lies s sin(a) - r_s cos(a) from it, a the angle to the tangent.
+  // edge nearest the wall lies s sin(a) - r_s cos(a) from it, a the angle to the tangent (for a
+  // flat wall; the chamber's curves towards the jet by t^2 / 2R over a tangential run t, about a
+  // tenth of a cell here).
   Vec3 radial = q.exit - axis;
   radial.z() = 0;
   const double sin_a = std::abs(q.dir.dot(radial.normalized()));
@@ -49,8 +48,9 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                                               "one cell and below the chamber radius"));
   const Config n = section.section("nozzles");
   const int count = int(n.get_int("count", 4, Range::closed(1, 64)));
-  const double angle = n.get("angle_deg", 40.0,
-                             Range::closed(0, 90, "give the angle to the wall tangent in degrees"));
+  const double angle =
+      n.get("angle_deg", 40.0,
+            Range::closed(5, 90, "give the angle to the wall tangent in degrees, 5 - 90"));
   const double first = n.get("first_deg", 0.0, Range::closed(-360, 360));
   const double z = n.get("height", 0.5 * g.height,
                          Range::closed(0, g.height, "give the axis height above the floor in m"));
@@ -76,6 +76,24 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
         std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
     g.nozzles.push_back(q);
   }
+  // The notional source must lie in the gas, clear of every wall by 1.5 cells (on the wall's
+  // cells bounce-back takes a large part of its momentum; jet_mill_geometry.hpp).
+  const Nozzle& q = g.nozzles.front();
+  const double rs = q.source_radius, clear = 1.5 * f.dx;
+  if (z < rs + clear || z > g.height - rs - clear)
+    throw InputError(n.path("height"), to_text(z),
+                     "the jets' notional source (radius " + to_text(rs) +
+                         " m) comes within 1.5 cells of the floor or roof",
+                     "give a height in [" + to_text(rs + clear) + ", " +
+                         to_text(g.height - rs - clear) +
+                         "] m, a smaller diameter, or a finer fluid.dx");
+  const double chord = 2 * g.radius * std::sin(angle * kPi / 180.0);
+  if (start_offset(q, g.axis, f.dx) + 2 * rs > chord - clear)
+    throw InputError(n.path("angle_deg"), to_text(angle),
+                     "the jets' notional source does not fit on the chord the jet crosses (" +
+                         to_text(chord) + " m)",
+                     "give a larger angle to the wall tangent, a smaller diameter, or a finer "
+                     "fluid.dx");
   return g;
 }
 

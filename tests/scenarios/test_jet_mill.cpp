@@ -92,14 +92,17 @@ TEST_CASE("jet mill: the nozzles' sources hold mdot, J and the jets' torque on a
           abs_force += fc.norm();
           torque += r.x() * fc.y() - r.y() * fc.x();
         }
-    INFO("dx = " << dx << " m, " << src.mass.size() << " source cells");
+    INFO("dx = " << dx << " m, " << src.mass.size() << " source cells, torque " << torque
+                 << " N m against " << kTorque);
     // Mass and momentum are normalised per nozzle: exact to round-off (sums of a few hundred
     // terms).
     CHECK(mass * kRho * cell / f.dt == Approx(4 * kMassFlow).epsilon(1e-12));
     CHECK(abs_force == Approx(4 * kMassFlow * kU).epsilon(1e-12));
     CHECK(force.norm() < 1e-12 * abs_force);  // four jets, 90 degrees apart
-    // The torque needs the force's centroid on the nozzle axis: the 4^3 samples per cell place it
-    // there to a fraction of a sample spacing (dx / 4, at most 1 % of R at 1 mm cells).
+    // The torque needs the force's centroid on the nozzle axis; the weights put it at cell centres,
+    // so it may sit up to dx / 2 off the axis, 2.6 % of the lever arm R cos(40 deg) at 1 mm cells,
+    // but the sampled overlaps balance about the axis: measured 0.001 - 0.014 % on 1, 0.5 and
+    // 0.25 mm cells. Bound 1 %.
     CHECK(torque == Approx(kTorque).epsilon(0.01));
   }
 }
@@ -127,7 +130,10 @@ TEST_CASE("jet mill: the jets spin the gas up at their torque 4 J R cos(40 deg) 
     for (const auto& row : t.rows) lt += row[il] * row[it], tt += row[it] * row[it];
     const double slope = lt / tt;
     INFO("dx = " << dx << " m: dL/dt = " << slope << " N m, jets' torque " << torque << " N m");
-    CHECK(slope == Approx(torque).epsilon(std::string(dx) == "1e-3" ? 0.05 : 0.025));
+    // One-sided below: the staircase's torque adds to the jets' here (measured), and any loss of
+    // the injected momentum would show as a slope under the torque.
+    CHECK(slope > 0.99 * torque);
+    CHECK(slope < (std::string(dx) == "1e-3" ? 1.05 : 1.025) * torque);
     slopes.push_back(slope);
   }
   CHECK(slopes[0] == Approx(slopes[1]).epsilon(0.02));
@@ -135,7 +141,7 @@ TEST_CASE("jet mill: the jets spin the gas up at their torque 4 J R cos(40 deg) 
 
 TEST_CASE(
     "jet mill gas: outlet balances the jets, a vortex forms, the radial flow carries the mass",
-    "[scenarios][jet_mill][physics]") {
+    "[scenarios][jet_mill][physics][slow]") {
   // 1 mm cells (50 x 50 x 5), 12 ms: the outflow settles within about 5 ms (acoustic and spin-up
   // transients; measured). Over 6 - 12 ms:
   //  - the outlet's mass flow equals the jets' sum within 0.5 % (the issue's bound; the gas mass is
@@ -172,7 +178,7 @@ TEST_CASE(
 }
 
 TEST_CASE("jet mill gas: LES stays stable where TRT diverges, and the watchdog says so",
-          "[scenarios][jet_mill]") {
+          "[scenarios][jet_mill][slow]") {
   // A 10 mm chamber at 0.25 mm cells, tau - 1/2 = 1.5e-4: the 120 m/s jets (Re 6400, 3.2 cells
   // across) are far from resolved. TRT passes the input checks (tau margin 1e-4, Mach 0.17) and
   // blows up within 0.2 ms (measured); the LES operator runs the same set-up (0.5 ms).
@@ -203,4 +209,28 @@ TEST_CASE("jet mill gas: LES stays stable where TRT diverges, and the watchdog s
   CHECK(line.find("les") != std::string::npos);
   const auto good = cli("run jet_mill" + kPreset + " --out " + tmpdir("jet_mill_les") + small);
   CHECK(good.code == 0);
+}
+
+TEST_CASE("jet mill: bad input stops with one line naming the key", "[scenarios][jet_mill]") {
+  struct Case {
+    std::string set, key;
+  };
+  const std::vector<Case> cases = {
+      {"jet_mill.nozzles.angle_deg=2.0", "jet_mill.nozzles.angle_deg"},
+      {"jet_mill.nozzles.height=0.0004", "jet_mill.nozzles.height"},
+      {"jet_mill.nozzles.diameter=0.006", "jet_mill.nozzles.diameter"},
+      {"jet_mill.outlet_radius=0.03", "jet_mill.outlet_radius"},
+      {"'fluid.faces.z_lo={kind=\"inlet\",velocity=[0.0,0.0,1.0]}'", "fluid.faces.z_lo"},
+      {"coupling.drag=\"gidaspow\"", "coupling"},
+  };
+  for (const Case& c : cases) {
+    const std::string out = tmpdir("jet_mill_bad");
+    const auto r = cli("run jet_mill" + kPreset + " --out " + out + " --set " + c.set);
+    INFO(c.set << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("'" + c.key) != std::string::npos);
+    CHECK(r.err.find("fix:") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
 }
