@@ -404,9 +404,16 @@ int BoxScenario::run(const RunContext& ctx) {
     inflow_.inserted = f.attr_double("inflow_inserted_kg");
     if (gas_) {
       load_fluid(f, *gas_);
-      // The gas leads by design (SubCycle); any other count means a different time step.
+      // The gas leads by design (SubCycle; coupled: by whole exchange intervals); any other count
+      // means a different time step. A coupled checkpoint inside an interval (written by a stop
+      // before stops waited for the interval's end) resumes too: the gas has run the interval and
+      // the particles hold its force (ParticleArrays::external, checkpointed); only a row at that
+      // interval's end would miss its exchange report (drag columns), which is not kept.
       const std::int64_t n = solver_->steps(), m = sub_.dem_per_gas;
-      const std::int64_t expected = m > 1 ? (n + m - 1) / m : n * sub_.gas_per_dem;
+      const std::int64_t k = interval_.dem_steps;
+      const std::int64_t expected = coupler_ ? (n + k - 1) / k * interval_.gas_steps
+                                    : m > 1  ? (n + m - 1) / m
+                                             : n * sub_.gas_per_dem;
       if (gas_->steps() != expected)
         throw std::runtime_error("checkpoint: " + std::to_string(gas_->steps()) +
                                  " gas steps at DEM step " + std::to_string(n) + ", expected " +

@@ -246,8 +246,11 @@ int DemDriver::run(const RunContext& ctx) {
   g_stop_signal = 0;
   g_old_handlers.int_ = std::signal(SIGINT, on_stop_signal);
   g_old_handlers.term_ = std::signal(SIGTERM, on_stop_signal);
+  // A stop waits for the next cycle boundary (at most cycle - 1 DEM steps): only there do all the
+  // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
+  const std::int64_t cycle = std::max<std::int64_t>(1, hooks_.cycle);
   while (solver_.steps() < last_step_) {
-    if (g_stop_signal) {
+    if (g_stop_signal && solver_.steps() % cycle == 0) {
       extra_row_ = extra_snapshot_ = false;
       check_health(progress);
       write_checkpoint(ctx.dir, stored0);
