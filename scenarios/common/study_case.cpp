@@ -83,13 +83,14 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   const auto t0 = std::chrono::steady_clock::now();
   const int rc = run_scenario(ro);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (rc != 0) return rc;
+  // A stopped run (130: a signal, checkpoint written) still adds its wall time to the case's.
+  if (rc != 0 && rc != 130) return rc;
   const double t_after = last_time(dir + "/timeseries.csv");
   const auto [wall0, sim0] = read_timing(dir);
   write_file_atomic(dir + "/study_timing.txt",
                     full(wall0 + wall) + " " +
                         full(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_before)) + "\n");
-  return 0;
+  return rc;
 }
 
 }  // namespace lbdem::scenarios
