@@ -84,6 +84,9 @@ void LbmSolver::set_outlet_density(int body, double density) {
   if (!(density > 0 && std::isfinite(density)))
     throw std::invalid_argument("outlet density must be positive, got " + std::to_string(density));
   Body& b = bodies_[std::size_t(body - 1)];
+  if (b.wall_function)
+    throw std::invalid_argument("body '" + b.name +
+                                "' has the wall function and cannot be an outlet");
   if (b.outlet_density <= 0) links_dirty_ = true;  // a new outlet needs its velocity samples
   b.outlet_density = density;
   b.outlet.density = density;  // an existing outlet: no rebuild, so a ramp per step stays cheap
@@ -103,8 +106,21 @@ void LbmSolver::set_cell(int x, int y, int z, int body) {
 
 void LbmSolver::set_wall_velocity(int body, WallVelocity u) {
   Body& b = bodies_[std::size_t(body - 1)];
+  if (u && b.wall_function)
+    throw std::invalid_argument("body '" + b.name +
+                                "' has the wall function: it must stay at rest");
   b.velocity = std::move(u);
   set_wall_velocity_terms(b);
+}
+
+void LbmSolver::set_wall_function(int body, bool on) {
+  if (body < 1 || body > body_count()) throw std::invalid_argument("unknown body id");
+  Body& b = bodies_[std::size_t(body - 1)];
+  if (on && (b.outlet_density > 0 || b.velocity))
+    throw std::invalid_argument("the wall function applies to walls at rest; body '" + b.name +
+                                "' is an outlet, an inlet or moving");
+  b.wall_function = on;
+  links_dirty_ = true;
 }
 
 void LbmSolver::set_wall_velocity_terms(Body& b) {
@@ -118,6 +134,7 @@ void LbmSolver::rebuild_links() {
     b.links = std::move(lists[k]);
     set_wall_velocity_terms(b);
     if (b.outlet_density > 0) b.outlet = build_outlet(b.links, flags_, b.outlet_density);
+    b.wall_cells = b.wall_function ? build_wall_function_cells(b.links) : WallFunctionCells{};
   }
   links_dirty_ = false;
 }
@@ -290,10 +307,14 @@ void LbmSolver::step() {
       },
       true);
   state_ = after_step(state_);
+  const WernerWengle law{viscosity(settings_.collision)};
+  const StepForce step_force{settings_.body_force, force_[0], force_[1], force_[2]};
   for (Body& b : bodies_)
     b.load = b.outlet_density > 0
                  ? apply_anti_bounce_back(pdf_, state_, b.links, b.outlet, b.origin)
-                 : apply_bounce_back(pdf_, state_, b.links, b.origin);
+             : b.wall_function ? apply_wall_function(pdf_, state_, b.links, b.wall_cells, law,
+                                                     step_force, settings_.wall_density, b.origin)
+                               : apply_bounce_back(pdf_, state_, b.links, b.origin);
   add_mass_sources();
   ++steps_;
 }

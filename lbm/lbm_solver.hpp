@@ -14,6 +14,7 @@
 #include "lbm/boundary/box_faces.hpp"
 #include "lbm/boundary/flags.hpp"
 #include "lbm/boundary/open_boundary.hpp"
+#include "lbm/boundary/wall_function.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/collision/collision_model.hpp"
 #include "lbm/forcing/guo.hpp"
@@ -75,6 +76,12 @@ class LbmSolver {
   int add_outlet(std::string name, double density);
   bool is_outlet(int body) const { return bodies_[std::size_t(body - 1)].outlet_density > 0; }
   void set_outlet_density(int body, double density);
+  /// Werner & Wengle's wall function on a body at rest (boundary/wall_function.hpp): its links
+  /// impose the law-of-the-wall stress at the molecular viscosity of the collision model in use
+  /// instead of no slip. For under-resolved LES walls; throws std::invalid_argument for an outlet
+  /// or a body with a wall velocity.
+  void set_wall_function(int body, bool on);
+  bool has_wall_function(int body) const { return bodies_[std::size_t(body - 1)].wall_function; }
   /// The point torques on a body are taken about [lattice coordinates]; default the origin.
   void set_body_origin(int body, const Vec3& x) { bodies_[std::size_t(body - 1)].origin = x; }
 
@@ -171,6 +178,8 @@ class LbmSolver {
     WallLoad load;
     double outlet_density = 0;  // > 0: a density outlet
     PressureOutlet outlet;      // its velocity samples, built with the links
+    bool wall_function = false;
+    WallFunctionCells wall_cells;  // built with the links when wall_function is on
   };
   void rebuild_links();
   void add_mass_sources();

@@ -219,6 +219,10 @@ BoxScenario::BoxScenario(const Config& cfg) {
     });
     for (int f = 0; f < 6; ++f)
       inlet_set_[std::size_t(f)] = fluid_.faces[std::size_t(f)].velocity_at(0);
+    if (fluid_.wall_function)
+      for (int f = 0; f < 6; ++f)
+        if (fluid_.faces[std::size_t(f)].kind == "wall")
+          gas_->set_wall_function(gas_->face_body(f), true);
   }
   if (cfg.has("coupling")) {
     if (!has_fluid || gas_only_)

@@ -155,6 +155,7 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
     // max_speed jump across one cell, |S| = max_speed / dx.
     nu_turbulent_max = c.smagorinsky * c.smagorinsky * c.dx * c.max_speed;
   }
+  c.wall_function = fluid.get_bool("wall_function", false);
   // A parameter of another operator would be silently ignored: say so.
   if (fluid.has("magic") && c.collision != "trt")
     throw InputError(fluid.path("magic"), "", "only used by fluid.collision = \"trt\"",
@@ -298,6 +299,8 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
             : f.collision == "les"
                 ? " (regularized, Smagorinsky C_s " + to_text(f.smagorinsky) + ")"
                 : ""));
+  if (f.wall_function)
+    log.line("  walls                              Werner-Wengle wall function (walls at rest)");
   log.derived("tau (molecular)", r.tau, "", "(tau - 1/2 = " + to_text(r.tau - 0.5) + ")");
   log.derived("tau effective range", r.tau, "", "to " + to_text(r.tau_effective_max));
   log.derived("nu_lattice", r.nu_lattice, "");

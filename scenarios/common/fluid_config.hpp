@@ -11,6 +11,8 @@
 //   static Dp within 1 % of rho c_s^2), max_speed [m/s], pressure_difference [Pa] (default: the
 //   hydrostatic sum_a |F_a| L_a of the force density F over the wall-bounded axes),
 //   collision = "trt" (magic, default 3/16) | "bgk" | "les" (smagorinsky, default 0.1),
+//   wall_function (false; true: Werner-Wengle's law of the wall on every wall at rest, for LES
+//   whose first cell lies outside the viscous sublayer; lbm/boundary/wall_function.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
 //   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s]} |
@@ -51,6 +53,7 @@ struct FluidConfig {
   double pressure_difference = 0;  // static Dp for the compressibility check [Pa]
   std::string collision = "trt";   // trt | bgk | les
   double magic = 0, smagorinsky = 0;
+  bool wall_function = false;
   Vec3 body_force = Vec3::Zero();        // total force density on the gas, gravity included [N/m^3]
   bool weighs = false;                   // body_force includes the gas's weight rho g
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]

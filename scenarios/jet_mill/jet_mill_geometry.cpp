@@ -104,6 +104,7 @@ int build_chamber(lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeomet
   wall.axis_point = g.axis;
   wall.radius = g.radius;
   lbm::mark_cylinder(gas, frame, wall, lbm::SolidSide::outside, chamber);
+  if (f.wall_function) gas.set_wall_function(chamber, true);
   // The vortex finder: the top plate's ghost cells over r < outlet_radius, at the reference
   // pressure (density 1: the gauge pressure of the outlet is zero).
   const int outlet = gas.add_outlet("outlet", 1.0);

@@ -17,6 +17,7 @@
 
 #include "core/config.hpp"
 #include "helpers/cli.hpp"
+#include "helpers/csv_table.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 
 namespace {
@@ -27,32 +28,8 @@ using lbdem::test::tmpdir;
 const std::string kPreset =
     " --config " + std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/default.toml";
 
-struct Table {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> rows;
-  int col(const std::string& n) const {
-    for (std::size_t k = 0; k < names.size(); ++k)
-      if (names[k] == n) return int(k);
-    FAIL("no column " << n);
-    return -1;
-  }
-};
-
-Table read_csv(const std::string& path) {
-  Table t;
-  std::ifstream f(path);
-  std::string line;
-  std::getline(f, line);
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) t.names.push_back(c);
-  while (std::getline(f, line)) {
-    std::stringstream ls(line);
-    std::vector<double> r;
-    for (std::string c; std::getline(ls, c, ',');) r.push_back(std::stod(c));
-    t.rows.push_back(r);
-  }
-  return t;
-}
+using Table = lbdem::test::CsvTable;
+using lbdem::test::read_csv;
 
 constexpr double kPi = 3.14159265358979323846;
 

@@ -1,0 +1,142 @@
+#include "lbm/boundary/wall_function.hpp"
+
+#include "core/deterministic_sum.hpp"
+#include "lbm/d3q19.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace lbdem::lbm {
+
+double WernerWengle::kinematic_stress(double u, double dz) const {
+  const double a = kA, b = kB;
+  const double nu_dz = nu / dz;
+  if (u <= 0.5 * nu_dz * std::pow(a, 2.0 / (1.0 - b))) return 2.0 * nu_dz * u;
+  const double s = 0.5 * (1.0 - b) * std::pow(a, (1.0 + b) / (1.0 - b)) * std::pow(nu_dz, 1.0 + b) +
+                   (1.0 + b) / a * std::pow(nu_dz, b) * u;
+  return std::pow(s, 2.0 / (1.0 + b));
+}
+
+namespace {
+
+// A unit vector normal to n, chosen from the axis least aligned with it (deterministic).
+Vec3 first_tangent(const Vec3& n) {
+  const Vec3 a = std::abs(n.x()) <= std::abs(n.y()) && std::abs(n.x()) <= std::abs(n.z())
+                     ? Vec3::UnitX()
+                     : (std::abs(n.y()) <= std::abs(n.z()) ? Vec3::UnitY() : Vec3::UnitZ());
+  return (a - a.dot(n) * n).normalized();
+}
+
+}  // namespace
+
+WallFunctionCells build_wall_function_cells(const BounceBackLinks& links) {
+  WallFunctionCells c;
+  std::size_t k = 0;
+  while (k < links.size()) {
+    const Index cell = links.fluid[k];
+    std::size_t end = k;
+    Vec3 s = Vec3::Zero();
+    Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+    for (; end < links.size() && links.fluid[end] == cell; ++end) {
+      const int q = links.dir[end];
+      const Vec3 cq(kCx[q], kCy[q], kCz[q]);
+      s += kW[q] * cq;
+      m += 6.0 * kW[q] * cq * cq.transpose();
+    }
+    // A cell whose links cancel (a one-cell gap) has no wall direction: it keeps no-slip links.
+    const double len = s.norm();
+    Vec3 n = Vec3::Zero(), e1 = Vec3::Zero(), e2 = Vec3::Zero();
+    Eigen::Matrix2d pinv = Eigen::Matrix2d::Zero();
+    if (len > 1e-12) {
+      n = -s / len;
+      e1 = first_tangent(n);
+      e2 = n.cross(e1);
+      Eigen::Matrix2d mt;
+      mt << e1.dot(m * e1), e1.dot(m * e2), e2.dot(m * e1), e2.dot(m * e2);
+      // Pseudo-inverse: eigenvalues far below a flat face's 1/3 belong to directions no link
+      // reaches (a link along n), which the slip cannot change.
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
+      es.computeDirect(mt);  // closed form for 2 x 2
+      for (int i = 0; i < 2; ++i)
+        if (es.eigenvalues()(i) > 1e-9)
+          pinv +=
+              es.eigenvectors().col(i) * es.eigenvectors().col(i).transpose() / es.eigenvalues()(i);
+    }
+    c.cell.push_back(cell);
+    c.first.push_back(std::uint32_t(k));
+    c.normal.push_back(n);
+    c.e1.push_back(e1);
+    c.e2.push_back(e2);
+    c.area.push_back(len > 1e-12 ? 6.0 * len : 0.0);
+    c.m_pinv.push_back({pinv(0, 0), pinv(0, 1), pinv(1, 1)});
+    k = end;
+  }
+  c.first.push_back(std::uint32_t(links.size()));
+  return c;
+}
+
+WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
+                             const WallFunctionCells& cells, const WernerWengle& law,
+                             const StepForce& force, double rho_w, const Vec3& origin) {
+  const Grid& g = pdf.grid();
+  const AaState before = after_step(now);  // the state the step started from
+  // The summand applies its cell's links as a side effect: deterministic_sum calls it once per i.
+  return deterministic_sum(
+      cells.size(),
+      [&](std::size_t i) -> WallLoad {
+        const std::size_t k0 = cells.first[i], k1 = cells.first[i + 1];
+        Vec3 slip = Vec3::Zero();
+        if (cells.area[i] > 0) {
+          // The cell's post-collision populations, where the step stored them.
+          const auto [x, y, z] = g.coordinates(cells.cell[i]);
+          double* out[kQ];
+          write_pointers(pdf, before, x, y, z, out);
+          double rho = 0;
+          Vec3 j = Vec3::Zero();
+          for (int q = 0; q < kQ; ++q) {
+            rho += *out[q];
+            j += *out[q] * Vec3(kCx[q], kCy[q], kCz[q]);
+          }
+          Vec3 fc = force.uniform;
+          if (!force.x.empty()) {
+            const Index c = cells.cell[i];
+            fc += Vec3(force.x[std::size_t(c)], force.y[std::size_t(c)], force.z[std::size_t(c)]);
+          }
+          j -= 0.5 * fc;
+          const Vec3& n = cells.normal[i];
+          const Vec3 ut = j / rho - (j / rho).dot(n) * n;
+          const double speed = ut.norm();
+          Vec3 p = Vec3::Zero();  // momentum the links carry into the wall
+          for (std::size_t k = k0; k < k1; ++k) {
+            const int q = links.dir[k];
+            p += link_slots(pdf, now, links, k).from * Vec3(kCx[q], kCy[q], kCz[q]);
+          }
+          Vec3 target = Vec3::Zero();
+          if (speed > 0) target = rho * law.kinematic_stress(speed) * cells.area[i] / speed * ut;
+          const Vec3 r = 2.0 * p - target;
+          const double r1 = cells.e1[i].dot(r), r2 = cells.e2[i].dot(r);
+          const auto& mi = cells.m_pinv[i];
+          slip =
+              ((mi[0] * r1 + mi[1] * r2) * cells.e1[i] + (mi[1] * r1 + mi[2] * r2) * cells.e2[i]) /
+              rho_w;
+        }
+        WallLoad load;
+        for (std::size_t k = k0; k < k1; ++k) {
+          const int q = links.dir[k];
+          const Vec3 cq(kCx[q], kCy[q], kCz[q]);
+          links.correction[k] = -2.0 * kW[q] * rho_w * cq.dot(slip) / kCs2;
+          auto [from, to] = link_slots(pdf, now, links, k);
+          const double post = from;
+          to = post + links.correction[k];
+          const Vec3 f = (2.0 * post + links.correction[k]) * cq;
+          load.force += f;
+          load.torque += (links.point[k] - origin).cross(f);
+          load.mass += links.correction[k];
+        }
+        return load;
+      },
+      WallLoad{});
+}
+
+}  // namespace lbdem::lbm
