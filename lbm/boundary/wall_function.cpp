@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace lbdem::lbm {
@@ -120,6 +121,19 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
           slip =
               ((mi[0] * r1 + mi[1] * r2) * cells.e1[i] + (mi[1] * r1 + mi[2] * r2) * cells.e2[i]) /
               rho_w;
+          // Stability: the wall may slip along the flow, between no slip and the cell's own speed,
+          // never against it or past it. The bounds are inactive where the layer is in
+          // equilibrium (slip ~ u_t - 3 tau_w / rho_w, with tau_w between 0 and no slip's) and
+          // catch the transients in which the explicit slip would drive the wall cell.
+          if (speed > 0) {
+            const Vec3 t = ut / speed;
+            const double along = std::clamp(slip.dot(t), 0.0, speed);
+            Vec3 across = slip - slip.dot(t) * t;
+            if (across.norm() > speed) across *= speed / across.norm();
+            slip = along * t + across;
+          } else {
+            slip = Vec3::Zero();
+          }
         }
         WallLoad load;
         for (std::size_t k = k0; k < k1; ++k) {

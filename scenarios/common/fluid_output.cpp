@@ -177,7 +177,9 @@ std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const Flu
          " - " + to_text(1 + kHealthyDensity) + ", below " +
          to_text(u.velocity_to_si(kHealthySpeed)) +
          " m/s); the last checkpoint and output are kept; fix: lower fluid.dt (or "
-         "fluid.lattice_velocity), refine fluid.dx, or use fluid.collision = \"les\"";
+         "fluid.lattice_velocity), refine fluid.dx" +
+         (c.collision == "les" ? std::string(", or raise fluid.smagorinsky")
+                               : std::string(", or use fluid.collision = \"les\""));
 }
 
 }  // namespace lbdem::scenarios

@@ -21,7 +21,8 @@ struct Snapshot {
 };
 
 // Walls, a moving lid, a solid block, TRT, a uniform and a per-cell force: every code path; with
-// les_porous the regularized LES operator and the porous-medium policy (eps, Darcy, Forchheimer).
+// les_porous the regularized LES operator, the porous-medium policy (eps, Darcy, Forchheimer) and
+// the wall function on the block and the floor.
 Snapshot run(int threads, int steps, bool les_porous = false) {
   omp_set_num_threads(threads);
   LbmSettings s;
@@ -55,6 +56,8 @@ Snapshot run(int threads, int steps, bool les_porous = false) {
           lbm.set_cell_porosity(x, y, z, 0.6 + 0.3 * std::cos(0.2 * x * y), 1e-3 * (z % 3));
     lbm.set_forchheimer(0.5);
     lbm.set_body_origin(block, Vec3(4.5, 7, 5.5));
+    lbm.set_wall_function(block, true);  // and the wall function's per-cell slip
+    lbm.set_wall_function(lbm.face_body(4), true);
   }
   for (int t = 0; t < steps; ++t) lbm.step();
   Snapshot snap;
