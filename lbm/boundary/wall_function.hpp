@@ -13,11 +13,15 @@
 // Law: Werner & Wengle 1991 (8th Symp. Turbulent Shear Flows, Munich), u+ = y+ for
 // y+ <= A^(1/(1-B)) = 11.81 and u+ = A y+^B above, A = 8.3, B = 1/7, integrated over the first
 // cell (height dz, wall at its face) so that the cell's mean speed u gives tau_w in closed form:
-//   tau_w / rho = 2 nu u / dz                                            if u <= nu A^(2/(1-B)) /
-//   (2 dz) tau_w / rho = [ (1-B)/2 A^((1+B)/(1-B)) (nu/dz)^(1+B) + (1+B)/A (nu/dz)^B u ]^(2/(1+B))
-//   else.
-// The first branch is exactly the stress of half-way bounce-back in a laminar layer, so the
-// function changes nothing where the first cell is inside the viscous sublayer.
+//   tau_w / rho = 2 nu u / dz,  if u <= nu A^(2/(1-B)) / (2 dz);
+//   tau_w / rho = [ (1-B)/2 A^((1+B)/(1-B)) (nu/dz)^(1+B) + (1+B)/A (nu/dz)^B u ]^(2/(1+B)),
+//   otherwise.
+// The first branch is the stress of half-way bounce-back for a linear profile across the first
+// cell, so inside the viscous sublayer the function differs from no slip only by the profile's
+// curvature (in Poiseuille flow a uniform shift of F / (8 nu); tests/lbm/test_wall_function.cpp).
+// Staircase limits: at a concave edge within one body the cell's area 6 |sum w_q c_q| is about
+// 1.2 where two faces give 2, and the normal is the diagonal. In porous cells the velocity read
+// here lacks the porous drag's half-step share (coupled runs with particles at walls).
 //
 // Imposition, per fluid cell next to the wall (its links are contiguous in the body's list):
 // with post-collision populations f_q*, the links give the wall F = sum_q c_q (2 f_q* + corr_q)
