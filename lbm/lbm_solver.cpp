@@ -92,6 +92,13 @@ void LbmSolver::set_outlet_density(int body, double density) {
   b.outlet.density = density;  // an existing outlet: no rebuild, so a ramp per step stays cheap
 }
 
+void LbmSolver::set_outlet_extrapolation(int body, bool on) {
+  Body& b = bodies_[std::size_t(body - 1)];
+  if (b.outlet_density <= 0) throw std::invalid_argument("body '" + b.name + "' is not an outlet");
+  if (b.outlet_extrapolate != on) links_dirty_ = true;
+  b.outlet_extrapolate = on;
+}
+
 void LbmSolver::set_cell(int x, int y, int z, int body) {
   if (body != 0)
     for (const MassSource& m : mass_sources_)
@@ -133,7 +140,8 @@ void LbmSolver::rebuild_links() {
     Body& b = bodies_[k];
     b.links = std::move(lists[k]);
     set_wall_velocity_terms(b);
-    if (b.outlet_density > 0) b.outlet = build_outlet(b.links, flags_, b.outlet_density);
+    if (b.outlet_density > 0)
+      b.outlet = build_outlet(b.links, flags_, b.outlet_density, b.outlet_extrapolate);
     b.wall_cells = b.wall_function ? build_wall_function_cells(b.links) : WallFunctionCells{};
   }
   links_dirty_ = false;

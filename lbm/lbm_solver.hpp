@@ -76,6 +76,9 @@ class LbmSolver {
   int add_outlet(std::string name, double density);
   bool is_outlet(int body) const { return bodies_[std::size_t(body - 1)].outlet_density > 0; }
   void set_outlet_density(int body, double density);
+  /// Whether the outlet extrapolates the velocity of its bracket to the half-way points (default)
+  /// or takes the cell's (boundary/open_boundary.hpp: off where a strong swirl crosses it).
+  void set_outlet_extrapolation(int body, bool on);
   /// Werner & Wengle's wall function on a body at rest (boundary/wall_function.hpp): its links
   /// impose the law-of-the-wall stress at the molecular viscosity of the collision model in use
   /// instead of no slip. For under-resolved LES walls; throws std::invalid_argument for an outlet
@@ -178,6 +181,7 @@ class LbmSolver {
     WallLoad load;
     double outlet_density = 0;  // > 0: a density outlet
     PressureOutlet outlet;      // its velocity samples, built with the links
+    bool outlet_extrapolate = true;
     bool wall_function = false;
     WallFunctionCells wall_cells;  // built with the links when wall_function is on
   };

@@ -8,10 +8,12 @@
 
 namespace lbdem::lbm {
 
-PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density) {
+PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density,
+                            bool extrapolate) {
   const Grid& g = flags.grid();
   PressureOutlet o;
   o.density = density;
+  o.extrapolate = extrapolate;
   std::unordered_map<Index, std::uint32_t> position;
   auto cell_of = [&](Index n) {
     const auto [it, added] = position.try_emplace(n, std::uint32_t(o.cells.size()));
@@ -25,7 +27,7 @@ PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags
     const auto [x, y, z] = g.coordinates(links.fluid[k]);
     const Index inward = g.neighbor(x, y, z, opposite(links.dir[k]));  // x - c_q, wrapped
     o.near_cell.push_back(near);
-    o.inward_cell.push_back(flags.fluid(inward) ? cell_of(inward) : near);
+    o.inward_cell.push_back(extrapolate && flags.fluid(inward) ? cell_of(inward) : near);
   }
   o.velocity.assign(o.cells.size(), Vec3::Zero());
   return o;
@@ -43,7 +45,7 @@ WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLink
         auto [from, to] = link_slots(pdf, now, links, k);
         const Vec3& u = outlet.velocity[outlet.near_cell[k]];
         const Vec3& u_in = outlet.velocity[outlet.inward_cell[k]];
-        const Vec3 uw = u + 0.5 * (u - u_in);  // exactly u(x) when there is no inward cell
+        const Vec3 uw = u + 0.5 * (u - u_in);  // exactly u(x) without an inward cell (or option)
         const double cu = kCx[q] * uw.x() + kCy[q] * uw.y() + kCz[q] * uw.z();
         // 1/(2 c_s^4) = 4.5 and 1/(2 c_s^2) = 1.5 for c_s^2 = 1/3.
         const double even = 2.0 * kW[q] * rho * (1.0 + 4.5 * cu * cu - 1.5 * uw.squaredNorm());

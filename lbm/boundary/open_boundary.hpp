@@ -13,8 +13,13 @@
 // Taking u_w = u(x) instead puts an O(|du/dx|) error into the O(u^2) terms, a first-order pressure
 // error wherever the flow still develops at the outlet (a jet, a wake); the extrapolation keeps the
 // second order. Where x - c_q is not fluid (a wall edge, a one-cell-deep domain) it falls back to
-// u(x). The velocities are sampled before the step's kernel from the populations in the current AA
-// state (moments.hpp, Guo-corrected), when all of them are still in place.
+// u(x). The extrapolation can be switched off per outlet (u_w = u(x)): it weighs u(x) by 3/2 and
+// its neighbour by -1/2, which feeds a cell-to-cell oscillation back into the bracket's (c_q.u_w)^2
+// term. Where a strong swirl crosses the outlet (the jet mill's vortex finder, tangential speed
+// far above the through-flow) that term is large and the feedback diverged the gas within 16 ms
+// (lattice velocity 0.07 and 0.1); with u_w = u(x) the same run stayed stable (measured). The
+// velocities are sampled before the step's kernel from the populations in the current AA state
+// (moments.hpp, Guo-corrected), when all of them are still in place.
 //
 // The equilibrium bracket is the free-gas one (eps = 1): outlets belong in particle-free gas, where
 // the porous form's 1/eps terms (forcing/porous.hpp) are 1.
@@ -38,6 +43,7 @@ namespace lbdem::lbm {
 /// The outlet's data beside its BounceBackLinks (which give fluid cell, solid cell, q, point).
 struct PressureOutlet {
   double density = 1.0;                    // rho_out at the half-way points [lattice units]
+  bool extrapolate = true;                 // u_w extrapolated to the half-way point, else u(x)
   std::vector<std::array<int, 3>> cells;   // fluid cells whose velocity the links read
   std::vector<Vec3> velocity;              // u(t) of each cell, sampled before the step
   std::vector<std::uint32_t> near_cell;    // per link: position in cells of x
@@ -45,7 +51,8 @@ struct PressureOutlet {
 };
 
 /// Lists the cells the outlet's links read, each once, in order of first use.
-PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density);
+PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density,
+                            bool extrapolate = true);
 
 /// Samples u(x, t) of every listed cell from state s (before the step), with the step's forcing.
 /// Each cell writes its own entry: the same values at any thread count. A small outlet stays on one

@@ -1,6 +1,7 @@
 #include "scenarios/jet_mill/jet_mill.hpp"
 
 #include <cmath>
+#include <string_view>
 
 #include "core/error.hpp"
 
@@ -12,8 +13,12 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
                      "add a [fluid] table (see scenarios/jet_mill/presets/default.toml)");
   // Particles come with the next step of issue 11: the DEM's chamber walls, the feed, the outlet's
   // removal, and a coupler built after the chamber's cells (its kernel masks solids when built).
-  for (const char* key : {"coupling", "fill", "particle", "inflow", "walls", "materials"})
-    if (cfg.has(key))
+  // [inflow] and [outlet] are the box's particle streams; the resolved config of a run (read back
+  // by --resume) holds them switched off.
+  for (const char* key : {"coupling", "fill", "particle", "inflow", "outlet", "walls", "materials"})
+    if (cfg.has(key) &&
+        !((std::string_view(key) == "inflow" || std::string_view(key) == "outlet") &&
+          !cfg.section(key).get_bool("enabled", true)))
       throw InputError(key, "", "the jet mill runs its gas only so far (particles: next step)",
                        "remove [" + std::string(key) + "]");
   const FluidConfig& f = box_.fluid();
