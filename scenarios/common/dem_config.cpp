@@ -152,6 +152,12 @@ dem::Wall read_wall(const Config& w, const std::vector<dem::Material>& mats) {
       throw InputError(w.path("normal"), "[0, 0, 0]", "zero normal", "give a non-zero normal");
     p.normal.normalize();
     p.velocity = w.get_vec3("velocity", Vec3::Zero());
+    p.hole_radius =
+        w.get("hole_radius", 0.0,
+              Range::non_negative("give the radius of the plate's hole in m (0: none)"));
+    // The hole's centre is projected onto the plane (a point off it would shift nothing else).
+    const Vec3 c = w.get_vec3("hole_centre", p.point);
+    p.hole_centre = c - (c - p.point).dot(p.normal) * p.normal;
     out.shape = p;
     out.torque_origin = p.point;
   } else if (kind == "cylinder") {
