@@ -11,12 +11,16 @@
 namespace lbdem::lbm {
 
 double WernerWengle::kinematic_stress(double u, double dz) const {
-  const double a = kA, b = kB;
-  const double nu_dz = nu / dz;
-  if (u <= 0.5 * nu_dz * std::pow(a, 2.0 / (1.0 - b))) return 2.0 * nu_dz * u;
-  const double s = 0.5 * (1.0 - b) * std::pow(a, (1.0 + b) / (1.0 - b)) * std::pow(nu_dz, 1.0 + b) +
-                   (1.0 + b) / a * std::pow(nu_dz, b) * u;
-  return std::pow(s, 2.0 / (1.0 + b));
+  return WernerWengleCell(*this, dz).kinematic_stress(u);
+}
+
+WernerWengleCell::WernerWengleCell(const WernerWengle& law, double dz) {
+  const double a = WernerWengle::kA, b = WernerWengle::kB;
+  const double nu_dz = law.nu / dz;
+  switch_speed = 0.5 * nu_dz * std::pow(a, 2.0 / (1.0 - b));
+  linear = 2.0 * nu_dz;
+  c0 = 0.5 * (1.0 - b) * std::pow(a, (1.0 + b) / (1.0 - b)) * std::pow(nu_dz, 1.0 + b);
+  c1 = (1.0 + b) / a * std::pow(nu_dz, b);
 }
 
 namespace {
@@ -82,6 +86,7 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
                              const StepForce& force, double rho_w, const Vec3& origin) {
   const Grid& g = pdf.grid();
   const AaState before = after_step(now);  // the state the step started from
+  const WernerWengleCell cell_law(law);
   // The summand applies its cell's links as a side effect: deterministic_sum calls it once per i.
   return deterministic_sum(
       cells.size(),
@@ -114,7 +119,8 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
             p += link_slots(pdf, now, links, k).from * Vec3(kCx[q], kCy[q], kCz[q]);
           }
           Vec3 target = Vec3::Zero();
-          if (speed > 0) target = rho * law.kinematic_stress(speed) * cells.area[i] / speed * ut;
+          if (speed > 0)
+            target = rho * cell_law.kinematic_stress(speed) * cells.area[i] / speed * ut;
           const Vec3 r = 2.0 * p - target;
           const double r1 = cells.e1[i].dot(r), r2 = cells.e2[i].dot(r);
           const auto& mi = cells.m_pinv[i];

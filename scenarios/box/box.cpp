@@ -163,6 +163,8 @@ BoxScenario::BoxScenario(const Config& cfg) {
   if (outlet_.on) {
     outlet_.lo = outlet.require_vec3("lo");
     outlet_.hi = outlet.require_vec3("hi");
+    outlet_.every = outlet.get_int("check_every", outlet_.every,
+                                   Range::closed(1, 1e9, "give the DEM steps between checks"));
   }
   gas_only_ = has_fluid && init.empty() && !inflow_.on;
   if (init.empty() && !inflow_.on && !gas_only_)
@@ -197,11 +199,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
   out_ = OutputSettings::from(run, cfg.section("output"));
 
   solver_ = std::make_unique<dem::DemSolver>(s, mats);
-  for (auto& w : walls) {
-    wall_columns_.push_back("wall_" + w.name + "_force_z_N");
-    wall_columns_.push_back("wall_" + w.name + "_torque_axis_Nm");
-    solver_->add_wall(std::move(w));
-  }
+  for (auto& w : walls) add_wall(std::move(w));
   for (const auto& q : init) {
     solver_->add_particle(q.x, q.v, q.r, q.mat);
     solver_->particles().omega.back() = q.w;
@@ -244,6 +242,18 @@ BoxScenario::BoxScenario(const Config& cfg) {
   }
 }
 
+void BoxScenario::add_wall(dem::Wall w) {
+  wall_columns_.push_back("wall_" + w.name + "_force_z_N");
+  wall_columns_.push_back("wall_" + w.name + "_torque_axis_Nm");
+  solver_->add_wall(std::move(w));
+}
+
+void BoxScenario::rebuild_coupler() {
+  if (!coupler_) return;
+  coupler_ = std::make_unique<coupling::Coupler>(*gas_, lbm::LatticeFrame{fluid_.lo, fluid_.dx},
+                                                 fluid_.units(), coupling_.settings);
+}
+
 std::int64_t BoxScenario::cycle() const {
   return coupler_ ? interval_.dem_steps : sub_.cycle();
 }
@@ -254,7 +264,15 @@ void BoxScenario::banner(Log& log) const {
   } else {
     for (const auto& line : cg_.banner) log.line(line);
     dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
-               step_.scales.rayleigh_time, step_.scales.where);
+               step_.scales.rayleigh_time, step_.scales.where,
+               inflow_.on ? inflow_.radius.smallest() : 0.0,
+               inflow_.on ? inflow_.radius.largest() : 0.0);
+    if (inflow_.on)
+      log.derived(
+          "feed (inflow) mass rate", inflow_.mass_rate, "kg/s",
+          "(from " + to_text(inflow_.start) + " s to " + to_text(inflow_.end) + " s, " +
+              to_text(inflow_.mass_rate * (std::min(inflow_.end, out_.end_time) - inflow_.start)) +
+              " kg in this run)");
   }
   if (gas_) fluid_banner(log, fluid_, sub_);
   if (coupler_) {
@@ -321,6 +339,13 @@ void BoxScenario::before_step(dem::DemSolver& s) {
           s.add_particle(g.x, inflow_.velocity, g.r, inflow_.material);
           inflow_.inserted += s.particles().mass.back();
         }
+        // Behind by more than two of the largest particles: the region is full.
+        const double r = inflow_.radius.largest();
+        if (target - inflow_.inserted > 2 * req.density * 4.0 / 3.0 * kPi * r * r * r &&
+            inflow_.behind_at < 0) {
+          inflow_.behind_at = t;
+          inflow_.behind_target = target;
+        }
       }
     }
   }
@@ -381,6 +406,14 @@ int BoxScenario::run(const RunContext& ctx) {
   hooks.before_step = [this, &ctx](dem::DemSolver& s) {
     before_step(s);
     advance_gas(s);
+    if (inflow_.behind_at >= 0 && !inflow_.behind_warned && ctx.log) {
+      inflow_.behind_warned = true;
+      ctx.log->line("warning: inflow: the feed region is full at t = " +
+                    to_text(inflow_.behind_at) + " s: " + to_text(inflow_.inserted) +
+                    " kg inserted of the " + to_text(inflow_.behind_target) +
+                    " kg asked by then (the rest follows as room frees); enlarge inflow.lo - "
+                    "inflow.hi or give the feed a velocity");
+    }
     // Clipped gas fractions: said once per run, with where (kernel.hpp).
     if (coupler_ && report_.porosity.clipped > 0 && !clip_warned_ && ctx.log) {
       clip_warned_ = true;

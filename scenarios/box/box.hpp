@@ -63,6 +63,11 @@ class BoxScenario : public Scenario {
     std::function<void(Log&)> banner;
   };
   void set_extra(Extra e) { extra_ = std::move(e); }
+  /// A DEM wall from a scenario built on the box, with its timeseries columns (before run()).
+  void add_wall(dem::Wall w);
+  /// Builds the exchange anew for the gas's current solid cells (its kernel leaves solids out when
+  /// built): for scenarios that shape the gas after the box (jet mill). No-op without [coupling].
+  void rebuild_coupler();
   /// Inflow and outlet, called by the driver before every step (public for tests that step by
   /// hand).
   void before_step(dem::DemSolver& s);
@@ -75,7 +80,9 @@ class BoxScenario : public Scenario {
     double mass_rate = 0, start = 0, end = 0, period = 0;
     int material = 0;
     dem::RadiusDistribution radius;
-    double inserted = 0;  // [kg]
+    double inserted = 0;                       // [kg]
+    double behind_at = -1, behind_target = 0;  // when the feed first fell behind its rate [s, kg]
+    bool behind_warned = false;
   };
   struct Outlet {
     bool on = false;

@@ -293,16 +293,18 @@ int DemDriver::run(const RunContext& ctx) {
 }
 
 void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double tr,
-                const std::string& where) {
+                const std::string& where, double feed_r_min, double feed_r_max) {
   const auto& p = s.particles();
   double mass = 0, rmin = 1e300, rmax = 0;
   for (std::size_t k = 0; k < p.size(); ++k)
     mass += p.mass[k], rmin = std::min(rmin, p.radius[k]), rmax = std::max(rmax, p.radius[k]);
+  if (feed_r_min > 0) rmin = std::min(rmin, feed_r_min), rmax = std::max(rmax, feed_r_max);
   const double dt = s.settings().dt;
   log.line("DEM derived numbers:");
   log.derived("particles", double(p.size()), "");
   log.derived("total particle mass", mass, "kg");
-  log.derived("radius min / max", rmin, "m", "max " + to_text(rmax) + " m");
+  log.derived("radius min / max", rmin, "m",
+              "max " + to_text(rmax) + " m" + (feed_r_min > 0 ? " (with the feed's)" : ""));
   log.derived("characteristic impact speed", v, "m/s");
   log.derived("contact time t_c", tc, "s", "(" + where + ")");
   log.derived("time step dt", dt, "s");

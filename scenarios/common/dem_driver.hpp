@@ -86,8 +86,10 @@ class DemDriver {
   Log* log_ = nullptr;
 };
 
-/// Derived DEM numbers for the start-up banner (DESIGN §3).
+/// Derived DEM numbers for the start-up banner (DESIGN §3). The radius range counts a feed's
+/// radii (feed_r_min > 0) with the particles present at the start.
 void dem_banner(Log& log, const dem::DemSolver& s, double impact_speed, double contact_time,
-                double rayleigh_time, const std::string& where);
+                double rayleigh_time, const std::string& where, double feed_r_min = 0,
+                double feed_r_max = 0);
 
 }  // namespace lbdem::scenarios

@@ -10,17 +10,17 @@ namespace lbdem::scenarios {
 JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   if (!box_.gas())
     throw InputError("fluid", "", "a jet mill needs its gas",
-                     "add a [fluid] table (see scenarios/jet_mill/presets/default.toml)");
-  // Particles come with the next step of issue 11: the DEM's chamber walls, the feed, the outlet's
-  // removal, and a coupler built after the chamber's cells (its kernel masks solids when built).
-  // [inflow] and [outlet] are the box's particle streams; the resolved config of a run (read back
-  // by --resume) holds them switched off.
-  for (const char* key : {"coupling", "fill", "particle", "inflow", "outlet", "walls", "materials"})
-    if (cfg.has(key) &&
-        !((std::string_view(key) == "inflow" || std::string_view(key) == "outlet") &&
-          !cfg.section(key).get_bool("enabled", true)))
-      throw InputError(key, "", "the jet mill runs its gas only so far (particles: next step)",
-                       "remove [" + std::string(key) + "]");
+                     "add a [fluid] table (see scenarios/jet_mill/presets/gas.toml)");
+  // The chamber's walls are the particles' walls: the DEM gets the cylinder and the top plate with
+  // the vortex finder's hole from [jet_mill], the floor from the box's z_lo face. Particles enter
+  // through [inflow] (the feed) only, inside the chamber.
+  for (const char* key : {"fill", "particle", "walls"})
+    if (cfg.has(key))
+      throw InputError(
+          key, "",
+          "the jet mill's particles come from its feed and its walls from "
+          "[jet_mill]",
+          key == std::string("walls") ? "remove [[walls]]" : "feed the particles through [inflow]");
   const FluidConfig& f = box_.fluid();
   static const char* kFaces[6] = {"x_lo", "x_hi", "y_lo", "y_hi", "z_lo", "z_hi"};
   for (int a = 0; a < 6; ++a)
@@ -31,12 +31,16 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
                        "chamber's cylinder, the outlet is cut into the top plate",
                        "leave fluid.faces out (all walls)");
   geometry_ = read_jet_mill(cfg.section("jet_mill"), f);
+  const bool particles = cfg.section("inflow").get_bool("enabled", false);
+  if (particles) add_chamber_walls(cfg);
   lbm::LbmSolver& gas = *box_.gas();
   outlet_ = build_chamber(gas, f, geometry_);
   sources_ = jet_sources(gas, f, geometry_);
   gas.set_mass_sources(sources_.mass);
   gas.enable_force_field();
   gas.set_force_field(sources_.force);
+  // The exchange's kernel must see the chamber's solid cells, which exist only now.
+  box_.rebuild_coupler();
   if (box_.coupler()) box_.coupler()->set_gas_source(sources_.force);
 
   BoxScenario::Extra extra;
@@ -60,6 +64,59 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   };
   extra.banner = [this](Log& log) { mill_banner(log); };
   box_.set_extra(std::move(extra));
+}
+
+void JetMillScenario::add_chamber_walls(const Config& cfg) {
+  const Config box = cfg.section("box");
+  // The box's own DEM faces: the floor only. Planes at the cylinder's bounding box would touch it
+  // at four lines and double the contact force there; a top face would close the vortex finder.
+  for (const char* face : {"x_lo", "x_hi", "y_lo", "y_hi", "z_hi"}) {
+    const std::string kind = box.get_string(face, face == std::string("z_hi") ? "open" : "wall");
+    if (kind != "open")
+      throw InputError(box.path(face), "\"" + kind + "\"",
+                       "the chamber's cylinder and top plate are the particles' walls",
+                       "set box." + std::string(face) + " = \"open\"");
+  }
+  if (box.get_string("z_lo", "wall") != "wall")
+    throw InputError(box.path("z_lo"), "\"" + box.get_string("z_lo", "wall") + "\"",
+                     "the box's z_lo face is the chamber's floor", "set box.z_lo = \"wall\"");
+  // The feed region lies inside the chamber (random fills keep spheres inside their region).
+  const Config inflow = cfg.section("inflow");
+  const Vec3 lo = inflow.require_vec3("lo"), hi = inflow.require_vec3("hi");
+  const JetMillGeometry& g = geometry_;
+  for (const Vec3& c : {lo, hi, Vec3(lo.x(), hi.y(), lo.z()), Vec3(hi.x(), lo.y(), hi.z())})
+    if (std::hypot(c.x() - g.axis.x(), c.y() - g.axis.y()) > g.radius || c.z() < g.axis.z() ||
+        c.z() > g.axis.z() + g.height)
+      throw InputError(inflow.path(c == hi ? "hi" : "lo"),
+                       to_text(c.x()) + ", " + to_text(c.y()) + ", " + to_text(c.z()),
+                       "a corner of the feed region lies outside the chamber",
+                       "keep inflow.lo - inflow.hi inside the cylinder of radius " +
+                           to_text(g.radius) + " m and height " + to_text(g.height) + " m");
+  dem::DemSolver& s = box_.solver();
+  int material = 0;
+  for (const dem::Wall& w : s.walls())
+    if (w.name == "z_lo") material = w.material;
+  dem::Wall side;
+  side.name = "chamber";
+  side.material = material;
+  dem::CylinderWall c;
+  c.origin = g.axis;
+  c.radius = g.radius;
+  c.inside = true;
+  side.shape = c;
+  side.torque_origin = g.axis;
+  box_.add_wall(std::move(side));
+  dem::Wall top;
+  top.name = "top_plate";
+  top.material = material;
+  dem::PlaneWall p;
+  p.point = g.axis + g.height * Vec3::UnitZ();
+  p.normal = -Vec3::UnitZ();
+  p.hole_radius = g.outlet_radius;
+  p.hole_centre = p.point;
+  top.shape = p;
+  top.torque_origin = p.point;
+  box_.add_wall(std::move(top));
 }
 
 double JetMillScenario::outlet_mass_flow() const {

@@ -39,6 +39,9 @@ class JetMillScenario : public Scenario {
 
  private:
   void mill_banner(Log& log) const;
+  /// The DEM's chamber: cylinder and top plate with the vortex finder's hole (the floor is the
+  /// box's z_lo face); checks the box's faces and the feed region against it.
+  void add_chamber_walls(const Config& cfg);
 
   BoxScenario box_;
   JetMillGeometry geometry_;
