@@ -26,9 +26,9 @@ class InputError : public std::runtime_error {
 };
 
 /// Renders a number the way a user would type it in a TOML file.
-inline std::string to_text(double v) {
+inline std::string to_text(double v, int digits = 6) {
   std::ostringstream os;
-  os.precision(6);
+  os.precision(digits);
   os << v;
   return os.str();
 }
