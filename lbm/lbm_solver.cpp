@@ -99,6 +99,13 @@ void LbmSolver::set_outlet_extrapolation(int body, bool on) {
   b.outlet_extrapolate = on;
 }
 
+void LbmSolver::set_outlet_backflow(int body, bool allowed) {
+  Body& b = bodies_[std::size_t(body - 1)];
+  if (b.outlet_density <= 0) throw std::invalid_argument("body '" + b.name + "' is not an outlet");
+  if (b.outlet_backflow != allowed) links_dirty_ = true;
+  b.outlet_backflow = allowed;
+}
+
 void LbmSolver::set_cell(int x, int y, int z, int body) {
   if (body != 0)
     for (const MassSource& m : mass_sources_)
@@ -141,7 +148,8 @@ void LbmSolver::rebuild_links() {
     b.links = std::move(lists[k]);
     set_wall_velocity_terms(b);
     if (b.outlet_density > 0)
-      b.outlet = build_outlet(b.links, flags_, b.outlet_density, b.outlet_extrapolate);
+      b.outlet =
+          build_outlet(b.links, flags_, b.outlet_density, b.outlet_extrapolate, b.outlet_backflow);
     b.wall_cells = b.wall_function ? build_wall_function_cells(b.links) : WallFunctionCells{};
   }
   links_dirty_ = false;

@@ -79,6 +79,9 @@ class LbmSolver {
   /// Whether the outlet extrapolates the velocity of its bracket to the half-way points (default)
   /// or takes the cell's (boundary/open_boundary.hpp: off where a strong swirl crosses it).
   void set_outlet_extrapolation(int body, bool on);
+  /// Whether gas may enter through the outlet (default) or its inflowing cells bounce back
+  /// (boundary/open_boundary.hpp: a swirl's core drawing gas in).
+  void set_outlet_backflow(int body, bool allowed);
   /// Werner & Wengle's wall function on a body at rest (boundary/wall_function.hpp): its links
   /// impose the law-of-the-wall stress at the molecular viscosity of the collision model in use
   /// instead of no slip. For under-resolved LES walls; throws std::invalid_argument for an outlet
@@ -182,6 +185,7 @@ class LbmSolver {
     double outlet_density = 0;  // > 0: a density outlet
     PressureOutlet outlet;      // its velocity samples, built with the links
     bool outlet_extrapolate = true;
+    bool outlet_backflow = true;
     bool wall_function = false;
     WallFunctionCells wall_cells;  // built with the links when wall_function is on
   };

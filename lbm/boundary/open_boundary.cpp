@@ -9,11 +9,12 @@
 namespace lbdem::lbm {
 
 PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density,
-                            bool extrapolate) {
+                            bool extrapolate, bool backflow) {
   const Grid& g = flags.grid();
   PressureOutlet o;
   o.density = density;
   o.extrapolate = extrapolate;
+  o.backflow = backflow;
   std::unordered_map<Index, std::uint32_t> position;
   auto cell_of = [&](Index n) {
     const auto [it, added] = position.try_emplace(n, std::uint32_t(o.cells.size()));
@@ -30,6 +31,13 @@ PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags
     o.inward_cell.push_back(extrapolate && flags.fluid(inward) ? cell_of(inward) : near);
   }
   o.velocity.assign(o.cells.size(), Vec3::Zero());
+  o.normal.assign(o.cells.size(), Vec3::Zero());
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const int q = links.dir[k];
+    o.normal[o.near_cell[k]] += kW[q] * Vec3(kCx[q], kCy[q], kCz[q]);
+  }
+  for (Vec3& n : o.normal)
+    if (n.norm() > 0) n.normalize();
   return o;
 }
 
@@ -50,6 +58,14 @@ WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLink
         // 1/(2 c_s^4) = 4.5 and 1/(2 c_s^2) = 1.5 for c_s^2 = 1/3.
         const double even = 2.0 * kW[q] * rho * (1.0 + 4.5 * cu * cu - 1.5 * uw.squaredNorm());
         const double post = from;  // f_q*(x, t)
+        if (!outlet.backflow &&
+            (even > 2.0 * post || u.dot(outlet.normal[outlet.near_cell[k]]) < 0)) {
+          // Inflow here (the link would add mass, or the cell moves inwards): a wall at rest for
+          // this step (header).
+          to = post;
+          const Vec3 f(2 * kCx[q] * post, 2 * kCy[q] * post, 2 * kCz[q] * post);
+          return {f, (links.point[k] - origin).cross(f), 0.0};
+        }
         const double back = even - post;
         to = back;
         const double m = post + back;
