@@ -47,7 +47,8 @@ const std::vector<ScenarioEntry>& scenarios() {
        "gas-fluidized bed of fine (cohesive) particles, original or coarse-grained (DESIGN 1.1)",
        "scenarios/fluidized_bed/presets/default.toml", make<FluidizedBedScenario>},
       {"jet_mill",
-       "spiral jet mill: LES gas vortex from grinding jets, coupled coarse-grained feed (DESIGN 1.3)",
+       "spiral jet mill: LES gas vortex from grinding jets, coupled coarse-grained feed (DESIGN "
+       "1.3)",
        "scenarios/jet_mill/presets/default.toml", make<JetMillScenario>},
       {"rheometer",
        "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell, DESIGN 1.2)",

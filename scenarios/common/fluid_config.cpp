@@ -70,9 +70,8 @@ int cells_along(const Config& fluid, int axis, double length, double dx) {
                      "the box edge along " + std::string(kAxes[axis]) + " (" + to_text(length) +
                          " m) is " + to_text(r) + " cells, not a whole number",
                      // 12 digits: a suggestion that passes the 1e-9 check when typed in
-                     "choose dx = L/n, e.g. " +
-                         to_text(length / std::max(1.0, std::floor(r)), 12) + " or " +
-                         to_text(length / std::ceil(r), 12) + " m");
+                     "choose dx = L/n, e.g. " + to_text(length / std::max(1.0, std::floor(r)), 12) +
+                         " or " + to_text(length / std::ceil(r), 12) + " m");
   return static_cast<int>(n);
 }
 
