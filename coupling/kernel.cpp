@@ -312,7 +312,9 @@ void ParticleKernel::interpolate_local(std::span<const double> field,
 void ParticleKernel::interpolate_local(std::span<const Vec3> field, std::vector<Vec3>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
   out.resize(particle_count());
-  sample_local<3>(field.data()->data(), out.data()->data());
+  // Cast, not ->data(): with no particles out.data() is null (a feed that has not started yet).
+  sample_local<3>(reinterpret_cast<const double*>(field.data()),
+                  reinterpret_cast<double*>(out.data()));
 }
 
 void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v) const {
@@ -372,7 +374,7 @@ void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>&
   }
   out.resize(particle_count());
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
-  sample<3>(v, out.data()->data());
+  sample<3>(v, reinterpret_cast<double*>(out.data()));
 }
 
 PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, double eps_min,

@@ -3,8 +3,9 @@
 // chamber, grinding jets at an angle to the wall tangent (jet_mill_geometry.hpp: the
 // notional-nozzle source model and its limits), a vortex finder through the top plate, an LES gas.
 // Built on the box (BoxScenario): [box] is the chamber's bounding box, [fluid] the gas (collision =
-// "les"), [jet_mill] the chamber and nozzles; the box's walls, particles, inflow and [coupling]
-// work as there. timeseries.csv adds
+// "les"), [jet_mill] the chamber and nozzles. Particles come from [inflow] (the feed) only; their
+// walls are the chamber's (cylinder, top plate with the outlet's hole) and the box's floor, and
+// [coupling] works as in the box. timeseries.csv adds
 //   jet_mass_flow_kg_s                 the nozzles' summed mass flow (exact, the sources),
 //   outlet_mass_flow_kg_s              gas leaving through the vortex finder,
 //   gas_tangential_speed_mid_m_s       mean u_theta over the cells at mid-radius (|r - R/2| < dx),
