@@ -7,6 +7,9 @@
 
 namespace lbdem::coupling {
 
+// The vector fields are sampled as flat arrays of doubles (x, y, z per entry).
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
+
 namespace {
 
 // Discrete variance sum k^2 g(k) / sum g(k) of the triweight g(k) = (1 - (k/R)^2)^3, |k| < R.
@@ -373,7 +376,6 @@ void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>&
     smooth(in, v[std::size_t(a)]);
   }
   out.resize(particle_count());
-  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
   sample<3>(v, reinterpret_cast<double*>(out.data()));
 }
 

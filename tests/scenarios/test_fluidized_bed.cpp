@@ -29,6 +29,7 @@
 #include "core/h5.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/csv_table.hpp"
+#include "helpers/resume_check.hpp"
 
 namespace {
 
@@ -181,19 +182,8 @@ TEST_CASE("a resumed coupled bed equals an uninterrupted one, on any thread coun
   REQUIRE(cli("run fluidized_bed --threads 2 --set run.end_time=0.003 --out " + part + ramp).code ==
           0);
   REQUIRE(cli("run --resume " + part + " --threads 2 --set run.end_time=0.006").code == 0);
-  const lbdem::H5In a(full + "/checkpoint.h5"), b(part + "/checkpoint.h5");
-  const auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
-    return x.size() == y.size() &&
-           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0);
-  };
-  for (const char* set : {"/fluid/populations", "/dem/x", "/dem/v", "/dem/external"}) {
-    INFO(set);
-    const auto x = a.doubles(set);
-    REQUIRE_FALSE(x.empty());
-    CHECK(same(x, b.doubles(set)));
-  }
-  CHECK(lbdem::test::read_text(full + "/timeseries.csv") ==
-        lbdem::test::read_text(part + "/timeseries.csv"));
+  lbdem::test::check_same_runs(full, part,
+                               {"/fluid/populations", "/dem/x", "/dem/v", "/dem/external"});
   std::filesystem::remove_all(full);
   std::filesystem::remove_all(part);
 }
@@ -216,15 +206,8 @@ TEST_CASE("a coupled bed stopped by a signal resumes to the uninterrupted run",
   REQUIRE(WIFEXITED(rc));
   REQUIRE(WEXITSTATUS(rc) == 130);
   REQUIRE(cli("run --resume " + part + " --threads 1").code == 0);
-  const lbdem::H5In a(full + "/checkpoint.h5"), b(part + "/checkpoint.h5");
-  for (const char* set : {"/fluid/populations", "/dem/x", "/dem/v", "/dem/external"}) {
-    INFO(set);
-    const auto x = a.doubles(set), y = b.doubles(set);
-    REQUIRE(x.size() == y.size());
-    CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0);
-  }
-  CHECK(lbdem::test::read_text(full + "/timeseries.csv") ==
-        lbdem::test::read_text(part + "/timeseries.csv"));
+  lbdem::test::check_same_runs(full, part,
+                               {"/fluid/populations", "/dem/x", "/dem/v", "/dem/external"});
   std::filesystem::remove_all(full);
   std::filesystem::remove_all(part);
 }
