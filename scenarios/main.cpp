@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   study->add_flag("--no-plots", so.no_plots, "skip the PNG plots");
   study->add_flag("--list", so.list, "list the studies");
+  study->add_flag("--quick", so.quick,
+                  "a short check of the whole chain at reduced size and end time (jet_mill)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -19,6 +19,7 @@
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
+#include "scenarios/jet_mill/jet_mill_study.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
 namespace lbdem::scenarios {
@@ -85,11 +86,19 @@ int run_study(const StudyOptions& opt) {
                  "l^2 and l^3 rules (DESIGN 1.1): bed height and pressure drop, spectra, table\n";
     std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule "
                  "(DESIGN 1.2): torque table and plot\n";
+    std::cout
+        << "jet_mill  CG-1, 2, 4, 8, 10 of the spiral jet mill (DESIGN 1.3), scaled gas cells "
+           "(cg*_fixed: one grid): maps, profiles, kinetic energy, collisions, table; "
+           "--quick: a check in minutes\n";
     return 0;
   }
+  if (opt.quick && opt.name != "jet_mill")
+    throw InputError("--quick", "", "only the jet_mill study has a quick form",
+                     "run ./lbdem study " + opt.name + " --end-time T for a short window");
   if (opt.name == "rheometer") return run_rheometer_study(opt);
   if (opt.name == "fluidized_bed") return run_fluidized_bed_study(opt);
-  throw InputError("study", opt.name, "unknown study; known: fluidized_bed, rheometer",
+  if (opt.name == "jet_mill") return run_jet_mill_study(opt);
+  throw InputError("study", opt.name, "unknown study; known: fluidized_bed, jet_mill, rheometer",
                    "run ./lbdem study --list");
 }
 

@@ -12,6 +12,7 @@ struct StudyOptions {
   double end_time = 0;             // > 0: overrides each case's run.end_time (a measured window)
   int threads = 0;
   bool list = false, no_plots = false;
+  bool quick = false;  // the study's short check form (studies that have one)
 };
 
 }  // namespace lbdem::scenarios

@@ -296,3 +296,20 @@ TEST_CASE("jet mill with particles: bad input names the key", "[scenarios][jet_m
     CHECK_FALSE(std::filesystem::exists(out));
   }
 }
+
+TEST_CASE("jet mill study: bad input names the option", "[scenarios][jet_mill]") {
+  // An unknown case (CG-3 is not in the seed study's series) and --quick where a study has none:
+  // exit 2, one line naming the option and the fix, and no study folder.
+  const std::string out = tmpdir("jm_study_bad");
+  const auto unknown = cli("study jet_mill --cases cg3 --out " + out);
+  CHECK(unknown.code == 2);
+  CHECK(unknown.err.find("'--cases' = cg3") != std::string::npos);
+  CHECK(unknown.err.find("fix:") != std::string::npos);
+  const auto quick = cli("study fluidized_bed --quick --out " + out);
+  CHECK(quick.code == 2);
+  CHECK(quick.err.find("'--quick'") != std::string::npos);
+  const auto both = cli("study jet_mill --quick --end-time 0.01 --out " + out);
+  CHECK(both.code == 2);
+  CHECK(both.err.find("'--end-time'") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+}

@@ -1,0 +1,266 @@
+#include "scenarios/jet_mill/jet_mill_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "core/config.hpp"
+#include "core/error.hpp"
+#include "core/h5.hpp"
+#include "scenarios/common/fluid_config.hpp"
+#include "scenarios/common/study_case.hpp"
+#include "scenarios/jet_mill/jet_mill_geometry.hpp"
+
+namespace lbdem::scenarios {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+  std::string name;
+  int n;  // originals per parcel
+  bool in_default;
+};
+
+const std::vector<Case>& cases() {
+  static const std::vector<Case> c = {{"cg1", 1, true},        {"cg2", 2, true},
+                                      {"cg4", 4, true},        {"cg8", 8, true},
+                                      {"cg10", 10, true},      {"cg1_fixed", 1, false},
+                                      {"cg2_fixed", 2, false}, {"cg4_fixed", 4, false},
+                                      {"cg8_fixed", 8, false}, {"cg10_fixed", 10, false}};
+  return c;
+}
+
+// The study's figures average over its 0.07-0.1 s; --quick over the last 2 ms of its 4 ms.
+constexpr double kFrom = 0.07, kTo = 0.1, kQuickEnd = 0.004, kQuickFrom = 0.002;
+
+std::string fmt(double v, const char* f = "%.4g") {
+  if (!std::isfinite(v)) return "";
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+std::string quoted(const std::string& s) {
+  return "'" + s + "'";
+}
+
+// Rows of a CSV with a header, each a map from column name to its text.
+std::vector<std::map<std::string, std::string>> read_rows(const std::string& path) {
+  std::vector<std::map<std::string, std::string>> rows;
+  std::ifstream f(path);
+  std::string line;
+  if (!std::getline(f, line)) return rows;
+  std::vector<std::string> names;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
+  while (std::getline(f, line)) {
+    std::map<std::string, std::string> row;
+    std::stringstream ls(line);
+    std::size_t k = 0;
+    for (std::string c; std::getline(ls, c, ',') && k < names.size(); ++k) row[names[k]] = c;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+double number(const std::map<std::string, std::string>& row, const std::string& key) {
+  const auto it = row.find(key);
+  if (it == row.end() || it->second.empty()) return std::nan("");
+  try {
+    return std::stod(it->second);
+  } catch (const std::exception&) {
+    return std::nan("");
+  }
+}
+
+// The row of `rows` whose run_dir ends in /name.
+const std::map<std::string, std::string>* row_of(
+    const std::vector<std::map<std::string, std::string>>& rows, const std::string& name) {
+  for (const auto& r : rows) {
+    const auto it = r.find("run_dir");
+    if (it != r.end() && fs::path(it->second).filename() == name) return &r;
+  }
+  return nullptr;
+}
+
+// The last value of a timeseries column and the largest value of another.
+std::pair<double, double> last_and_max(const std::string& csv, const std::string& last_col,
+                                       const std::string& max_col) {
+  const auto rows = read_rows(csv);
+  double last = std::nan(""), mx = std::nan("");
+  for (const auto& r : rows) {
+    const double a = number(r, last_col), b = number(r, max_col);
+    if (std::isfinite(a)) last = a;
+    if (std::isfinite(b)) mx = std::isfinite(mx) ? std::max(mx, b) : b;
+  }
+  return {last, mx};
+}
+
+int system_ok(const std::string& cmd, const char* what) {
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) std::cerr << "warning: " << what << " failed (" << cmd << ")\n";
+  return rc;
+}
+
+}  // namespace
+
+int run_jet_mill_study(const StudyOptions& opt) {
+  std::vector<std::string> names;
+  for (const auto& c : cases()) names.push_back(c.name);
+  for (const auto& want : opt.cases)
+    if (std::find(names.begin(), names.end(), want) == names.end())
+      throw InputError("--cases", want, "no such jet_mill case",
+                       "did you mean '" + nearest(want, names) + "'? (./lbdem study --list)");
+  if (opt.quick && opt.end_time > 0)
+    throw InputError("--end-time", fmt(opt.end_time), "--quick sets its own end time",
+                     "give --quick or --end-time, not both");
+  const auto wanted = [&](const Case& c) {
+    return opt.cases.empty()
+               ? c.in_default
+               : std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end();
+  };
+  const std::string root =
+      opt.out.empty() ? (opt.quick ? "studies/jet_mill_quick" : "studies/jet_mill") : opt.out;
+  fs::create_directories(root);
+  const std::string src = LBDEM_SOURCE_DIR;
+  // The feed starts after the gas spin-up: study time 0 is inflow.start of the presets.
+  const double spin_up = Config::from_file(src + "/scenarios/jet_mill/presets/cg1.toml")
+                             .section("inflow")
+                             .get("start", 0.0);
+  StudyOptions run_opt = opt;
+  if (opt.quick) {
+    run_opt.end_time = spin_up + kQuickEnd;
+    run_opt.sets.insert(run_opt.sets.begin(),
+                        {"fluid.dx=1e-3", "output.interval=1e-4", "output.snapshot_interval=5e-4",
+                         "output.checkpoint_interval=0.01"});
+  }
+  for (const auto& c : cases()) {
+    if (!wanted(c)) continue;
+    const StudyCase sc{
+        c.name, "jet_mill", src + "/scenarios/jet_mill/presets/" + c.name + ".toml", {}};
+    if (const int rc = run_study_case(root, sc, run_opt, "jet_mill study"); rc != 0) return rc;
+  }
+
+  // Every case of the folder with output; the figures' window in run time.
+  const double from = spin_up + (opt.quick ? kQuickFrom : kFrom);
+  const double to = spin_up + (opt.quick ? kQuickEnd : kTo);
+  std::vector<const Case*> present;
+  for (const auto& c : cases()) {
+    const std::string dir = root + "/" + c.name;
+    if (fs::exists(dir + "/config.toml") && last_time(dir + "/timeseries.csv") > from)
+      present.push_back(&c);
+  }
+  if (present.empty()) {
+    std::cerr << "jet_mill study: no case has reached the window (" << from << " s of run time)\n";
+    return 0;
+  }
+  const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
+  std::map<std::string, double> dem_dt;
+  for (const Case* c : present) {
+    const std::string dir = root + "/" + c->name;
+    const Config cfg = Config::from_file(dir + "/config.toml");
+    const Config box = cfg.section("box");
+    const FluidConfig f = read_fluid(cfg.section("fluid"), box.require_vec3("lo"),
+                                     box.require_vec3("hi"), {false, false, false}, Vec3::Zero());
+    const JetMillGeometry g = read_jet_mill(cfg.section("jet_mill"), f);
+    dem_dt[c->name] = cfg.section("dem").get("dt", 0.0);
+    std::string cmd = quoted((bin / "lbdem-jet-mill-maps").string()) + " " + quoted(dir) +
+                      " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g") + " --out " +
+                      quoted(dir + "/mill");
+    for (const Nozzle& q : g.nozzles)
+      cmd += " --jet " + fmt(q.exit.x(), "%.9g") + "," + fmt(q.exit.y(), "%.9g") + "," +
+             fmt(q.dir.x(), "%.9g") + "," + fmt(q.dir.y(), "%.9g");
+    system_ok(cmd, "lbdem-jet-mill-maps");
+  }
+  std::string runs;
+  for (const Case* c : present) runs += " " + quoted(root + "/" + c->name) + " --label " + c->name;
+  const std::string window = " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g");
+  system_ok(quoted((bin / "lbdem-collision-stats").string()) + runs + window + " --csv " +
+                quoted(root + "/collisions.csv") + " > " + quoted(root + "/collisions_table.txt"),
+            "lbdem-collision-stats");
+  system_ok(quoted((bin / "lbdem-compare-runs").string()) + " --column kinetic_energy_J" + runs +
+                window + " --out " + quoted(root + "/kinetic_energy") + " > " +
+                quoted(root + "/kinetic_energy_table.txt"),
+            "lbdem-compare-runs");
+  const std::string python = LBDEM_PYTHON;
+  if (!opt.no_plots && !python.empty()) {
+    std::string plot = quoted(python) + " " + quoted(src + "/tools/jet_mill_figures.py") + " " +
+                       quoted(root) + " --from " + fmt(from, "%.17g") + " --to " +
+                       fmt(to, "%.17g") + " --offset " + fmt(spin_up, "%.17g");
+    for (const Case* c : present) plot += " " + c->name;
+    if (system_ok(plot + " > /dev/null", "tools/jet_mill_figures.py") == 0)
+      std::cout << "figures: " << fs::absolute(root).string() << "/*.png\n";
+    if (system_ok(quoted(python) + " " + quoted(src + "/tools/collision_stats.py") + " " +
+                      quoted(root + "/collisions.csv") + " > /dev/null",
+                  "tools/collision_stats.py") == 0)
+      std::cout << "plot: " << fs::absolute(root + "/collisions.png").string() << "\n";
+  }
+
+  // The table: one row per case.
+  const auto coll = read_rows(root + "/collisions.csv");
+  const auto ke = read_rows(root + "/kinetic_energy_stats.csv");
+  double wall_cg1 = std::nan(""), rate_prev = std::nan("");
+  int n_prev = 0;
+  std::ostringstream table;
+  table
+      << "case,originals_per_parcel,size_factor,parcels,window_from_s,window_to_s,simulated_s,"
+         "kinetic_energy_J,kinetic_energy_err_J,mean_speed_m_per_s,jet_speed_m_per_s,"
+         "collision_rate_pp_per_s,collision_rate_pw_per_s,freq_pp_per_original_per_s,"
+         "freq_pw_per_original_per_s,rate_pp_change_per_doubling,dissipated_J,"
+         "dissipated_normal_damping_J,dissipated_tangential_damping_J,dissipated_sliding_J,"
+         "dissipated_rolling_J,dissipation_rate_W,dissipated_per_step_J,dissipated_per_kg_J_per_kg,"
+         "outlet_mass_kg,wall_s_per_simulated_s,speedup_vs_cg1\n";
+  for (const Case* c : present) {
+    const std::string dir = root + "/" + c->name;
+    const auto [removed, parcels] =
+        last_and_max(dir + "/timeseries.csv", "mass_removed_kg", "particles");
+    const auto maps = read_rows(dir + "/mill_summary.csv");
+    const auto* cr = row_of(coll, c->name);
+    const auto* kr = row_of(ke, c->name);
+    const auto get = [](const std::map<std::string, std::string>* r, const char* k) {
+      return r ? number(*r, k) : std::nan("");
+    };
+    const auto [wall, timed] = read_timing(dir);
+    const double wps = wall > 0 && timed > 0 ? wall / timed : std::nan("");
+    if (c->name == "cg1" || c->name == "cg1_fixed") wall_cg1 = wps;
+    const double rate_pp = get(cr, "rate_pp_per_s");
+    // Change of the particle-particle collision rate per doubling of n from the previous case
+    // (the study reports about -60 %): (rate / rate_prev)^(1 / log2(n / n_prev)) - 1.
+    const double per_doubling =
+        n_prev > 0 && c->n > n_prev
+            ? std::pow(rate_pp / rate_prev, 1.0 / std::log2(double(c->n) / n_prev)) - 1
+            : std::nan("");
+    rate_prev = rate_pp, n_prev = c->n;
+    const double span = get(cr, "t_to_s") - get(cr, "t_from_s");
+    table << c->name << "," << c->n << "," << fmt(std::cbrt(double(c->n))) << ","
+          << fmt(parcels, "%.0f") << "," << fmt(from - spin_up) << "," << fmt(to - spin_up) << ","
+          << fmt(last_time(dir + "/timeseries.csv") - spin_up) << "," << fmt(get(kr, "mean")) << ","
+          << fmt(get(kr, "stderr_mean")) << ","
+          << fmt(maps.empty() ? std::nan("") : number(maps.front(), "mean_speed_m_per_s")) << ","
+          << fmt(maps.empty() ? std::nan("") : number(maps.front(), "jet_mean_speed_m_per_s"))
+          << "," << fmt(rate_pp) << "," << fmt(get(cr, "rate_pw_per_s")) << ","
+          << fmt(get(cr, "freq_pp_per_original_per_s")) << ","
+          << fmt(get(cr, "freq_pw_per_original_per_s")) << "," << fmt(per_doubling) << ","
+          << fmt(get(cr, "dissipated_J")) << "," << fmt(get(cr, "dissipated_normal_damping_J"))
+          << "," << fmt(get(cr, "dissipated_tangential_damping_J")) << ","
+          << fmt(get(cr, "dissipated_sliding_J")) << "," << fmt(get(cr, "dissipated_rolling_J"))
+          << "," << fmt(get(cr, "dissipation_rate_W")) << ","
+          << fmt(get(cr, "dissipated_J") * dem_dt[c->name] / span) << ","
+          << fmt(get(cr, "dissipated_per_kg_J_per_kg")) << "," << fmt(removed) << "," << fmt(wps)
+          << "," << fmt(wall_cg1 / wps) << "\n";
+  }
+  write_file_atomic(root + "/study.csv", table.str());
+  std::cout << "jet_mill study table: " << fs::absolute(root + "/study.csv").string() << "\n"
+            << table.str();
+  return 0;
+}
+
+}  // namespace lbdem::scenarios

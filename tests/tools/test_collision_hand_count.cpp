@@ -1,0 +1,113 @@
+// lbdem-collision-stats on a constructed run against hand counts (issue 11 §4): two beads meet
+// head-on and a third hits the floor, once each, without gravity; the tool's collision counts,
+// frequencies and dissipated energy against what one computes on paper.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "helpers/cli.hpp"
+
+namespace {
+
+using lbdem::test::cli;
+using lbdem::test::tmpdir;
+
+// Beads of r = 1 mm, rho = 2500 kg/m^3 (m = 1.0472e-5 kg), linear spring k = 10 N/m (t_c = 3.2 ms
+// at the pair's reduced mass), e = 0.5, no friction, no gravity, in a closed 10 mm box. A and B
+// approach at 0.1 m/s each across a 2 mm gap and touch at 10 ms; C falls at 0.1 m/s onto the floor
+// from 1 mm and touches at 10 ms. By 50 ms A and B (0.05 m/s apart after the collision) are still
+// 2 mm or more from the x walls, C 5 mm from the top.
+const char* kCase = R"(scenario = "box"
+[run]
+end_time = 0.05
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.01, 0.01, 0.01]
+z_hi = "wall"
+[physics]
+gravity = [0.0, 0.0, 0.0]
+[[materials]]
+name = "bead"
+density = 2500
+stiffness = 10.0
+restitution = 0.5
+friction = 0.0
+[contact]
+normal = "linear"
+[[particle]]
+position = [0.003, 0.005, 0.005]
+velocity = [0.1, 0.0, 0.0]
+radius = 1e-3
+[[particle]]
+position = [0.007, 0.005, 0.005]
+velocity = [-0.1, 0.0, 0.0]
+radius = 1e-3
+[[particle]]
+position = [0.002, 0.002, 0.002]
+velocity = [0.0, 0.0, -0.1]
+radius = 1e-3
+[output]
+interval = 0.005
+)";
+
+std::map<std::string, std::string> first_row(const std::string& path) {
+  std::ifstream f(path);
+  std::string head, row;
+  std::getline(f, head);
+  std::getline(f, row);
+  std::map<std::string, std::string> out;
+  std::stringstream hs(head), rs(row);
+  for (std::string h, v; std::getline(hs, h, ',') && std::getline(rs, v, ',');) out[h] = v;
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("collision-stats counts and dissipation equal hand counts on a constructed run",
+          "[tools][collisions]") {
+  const std::string dir = tmpdir("coll_hand"), cfg = dir + ".toml";
+  std::ofstream(cfg) << kCase;
+  const auto run = cli("run box --config " + cfg + " --out " + dir + " --threads 1");
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const std::string tool =
+      (std::filesystem::path(LBDEM_CLI).parent_path() / "lbdem-collision-stats").string();
+  const std::string csv = dir + "_coll.csv";
+  REQUIRE(std::system(
+              (tool + " " + dir + " --from 0 --to 0.05 --csv " + csv + " > /dev/null").c_str()) ==
+          0);
+  const auto r = first_row(csv);
+  const auto num = [&](const char* k) { return std::stod(r.at(k)); };
+  CHECK(num("collisions_pp") == 1);
+  CHECK(num("collisions_pw") == 1);
+  // Per parcel over the window among 3 parcels: 2 x 1 / (3 T) particle-particle (two parcels take
+  // part in each) and 1 / (3 T) particle-wall, T the span between the window's first and last
+  // time-series rows (rows fall on DEM steps, about 0.05 s apart here); l = 1, so per original the
+  // same. Both contacts (10 - 13 ms) lie inside it. The CSV holds 9 digits: 1e-8.
+  const double T = num("t_to_s") - num("t_from_s");
+  REQUIRE(num("t_from_s") < 0.01);
+  REQUIRE(num("t_to_s") > 0.014);
+  CHECK(num("freq_pp_per_parcel_per_s") == Approx(2.0 / (3 * T)).epsilon(1e-8));
+  CHECK(num("freq_pw_per_parcel_per_s") == Approx(1.0 / (3 * T)).epsilon(1e-8));
+  CHECK(num("freq_pp_per_original_per_s") == Approx(2.0 / (3 * T)).epsilon(1e-8));
+  // Dissipated: (1 - e^2) of the kinetic energy of the relative motion, 1/2 (m/2) (0.2 m/s)^2 for
+  // the pair and 1/2 m (0.1 m/s)^2 against the (infinitely heavy) floor: 7.854e-8 + 3.927e-8 J,
+  // all by normal damping. The linear spring-dashpot's restitution is exact for the continuous
+  // contact; the velocity-Verlet step (t_c/50 or shorter) leaves an error of order (dt/t_c)^2 in
+  // the rebound speed: 1 % covers it with room.
+  const double m = 2500 * 4.0 / 3.0 * M_PI * 1e-9;
+  const double pair = 0.75 * 0.5 * (m / 2) * 0.04, wall = 0.75 * 0.5 * m * 0.01;
+  CHECK(num("dissipated_J") == Approx(pair + wall).epsilon(0.01));
+  CHECK(num("dissipated_normal_damping_J") == Approx(pair + wall).epsilon(0.01));
+  CHECK(std::abs(num("dissipated_sliding_J")) < 1e-3 * (pair + wall));
+  CHECK(num("dissipated_per_collision_J") == Approx((pair + wall) / 2).epsilon(0.01));
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(cfg);
+  std::filesystem::remove(csv);
+  std::filesystem::remove(dir + "_coll_impact_speed.csv");
+}
