@@ -1,5 +1,7 @@
 #include "coupling/coupler.hpp"
 
+#include "core/phase_timer.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -44,6 +46,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   if (gas_steps < 1) throw std::invalid_argument("coupling: an interval needs >= 1 gas step");
   steps_ = gas_steps;
   steps_done_ = 0;
+  PhaseLap lap;
   const std::size_t np = p.size();
   report_ = ExchangeReport{};
   kernel_.locate(p.x);
@@ -57,6 +60,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   // itself is exact whatever beta_p is.
   report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
   eps_.swap(cell_scalar_);
+  lap.to(Phase::coupling_porosity);
   gas_.raw_velocity(cell_vec_);
   if (s_.two_way)
     for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
@@ -101,7 +105,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   report_.pressure_force = deterministic_sum(
       np, [&](std::size_t k) { return f_grad_[k]; }, Vec3(Vec3::Zero()));
   u_sum_.assign(cell_vec_.size(), Vec3::Zero());
-  if (!s_.two_way) return;
+  if (!s_.two_way) return lap.to(Phase::coupling_interpolation_drag);
 
   // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
   // explicit rest, sum_p (beta_p v_p - F_gradp,p) K_p / dx^3 - (1 - eps) rho_f g (see the header).
@@ -119,6 +123,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   }
   gas_.set_porosity_field(eps_, alpha_);
   gas_.set_force_field(force_lat_);
+  lap.to(Phase::coupling_interpolation_drag);
 }
 
 void Coupler::set_gas_source(std::vector<Vec3> force) {
@@ -137,8 +142,10 @@ void Coupler::before_gas_step() {
   // exactly what the gas lost over the steps. Two-way, the collision itself keeps the sum of u/eps
   // (LbmSolver::enable_velocity_sum); one-way, the gas's velocity is read before each step.
   if (s_.two_way) return;
+  PhaseLap lap;
   gas_.velocity(cell_vec_);
   for (std::size_t c = 0; c < cell_vec_.size(); ++c) u_sum_[c] += cell_vec_[c];
+  lap.to(Phase::coupling_interpolation_drag);
 }
 
 const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
@@ -147,6 +154,7 @@ const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
                            std::to_string(steps_) + " gas steps");
   if (p.size() != beta_.size())
     throw std::logic_error("coupling: the particles changed during an exchange interval");
+  PhaseLap lap;
   const double inv = 1.0 / steps_;
   if (s_.two_way) gas_.take_velocity_sum(u_sum_);
   kernel_.interpolate(u_sum_, u_p_);
@@ -158,6 +166,7 @@ const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
   }
   report_.drag = deterministic_sum(
       acc_.size(), [&](std::size_t k) { return acc_[k]; }, Vec3(Vec3::Zero()));
+  lap.to(Phase::coupling_interpolation_drag);
   return report_;
 }
 

@@ -1,5 +1,7 @@
 #include "dem/dem_solver.hpp"
 
+#include "core/phase_timer.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -71,6 +73,7 @@ double DemSolver::wall_displacement() const {
 void DemSolver::step() {
   const double dt = s_.dt, h = 0.5 * dt;
   const std::size_t n = p_.size();
+  PhaseLap lap;
   // Half kick, drift, and the velocities predicted to the end of the step (v + dt/2 F_old/m, used
   // by the dashpots), in one pass; a rebuild reorders particles, so it recomputes the predictions.
   v_pred_.resize(n);
@@ -89,6 +92,7 @@ void DemSolver::step() {
   t_ = static_cast<double>(step_ + 1) * dt;  // from the step count: no drift over 1e8 steps
   ++step_;
   update_walls();
+  lap.to(Phase::dem_integration);
   const double max_d = std::sqrt(max_d2);
   if (need_rebuild_ || 2 * max_d > s_.skin || max_d + wall_displacement() > s_.skin) {
     rebuild();
@@ -100,11 +104,14 @@ void DemSolver::step() {
       v_pred_[k] = p_.v[k] + (h / p_.mass[k]) * p_.force[k];
       w_pred_[k] = p_.omega[k] + (h / p_.inertia[k]) * p_.torque[k];
     }
+    lap.to(Phase::dem_neighbour_search);
   }
   std::visit(
       [&](const auto& table) {
         pair_pass(table);
+        lap.to(Phase::dem_pair_contacts);
         particle_pass(table);
+        lap.to(Phase::dem_walls_and_kick);
       },
       law_);
   event_scan();
@@ -115,6 +122,7 @@ void DemSolver::step() {
     external_work_ += 0.5 * dt * (external_power_prev_ + power);  // trapezoidal rule
     external_power_prev_ = power;
   }
+  lap.to(Phase::dem_bookkeeping);
 }
 
 template <class Table>

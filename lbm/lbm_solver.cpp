@@ -1,5 +1,7 @@
 #include "lbm/lbm_solver.hpp"
 
+#include "core/phase_timer.hpp"
+
 #include "core/error.hpp"
 #include "lbm/equilibrium.hpp"
 #include "lbm/forcing/porous.hpp"
@@ -311,6 +313,7 @@ void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
 }
 
 void LbmSolver::step() {
+  PhaseLap lap;
   if (links_dirty_) rebuild_links();
   with_forcing([&](const auto& forcing) {
     for (Body& b : bodies_)
@@ -322,6 +325,7 @@ void LbmSolver::step() {
                    settings_.collision);
       },
       true);
+  lap.to(Phase::lbm_collide_stream);
   state_ = after_step(state_);
   const WernerWengle law{viscosity(settings_.collision)};
   const StepForce step_force{settings_.body_force, force_[0], force_[1], force_[2]};
@@ -333,6 +337,7 @@ void LbmSolver::step() {
                                : apply_bounce_back(pdf_, state_, b.links, b.origin);
   add_mass_sources();
   ++steps_;
+  lap.to(Phase::lbm_boundaries);
 }
 
 void LbmSolver::set_mass_sources(std::vector<MassSource> sources) {

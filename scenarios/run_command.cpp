@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "core/config.hpp"
+#include "core/phase_timer.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/log.hpp"
@@ -19,6 +20,7 @@
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
+#include "scenarios/common/study_case.hpp"
 #include "scenarios/jet_mill/jet_mill_study.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
@@ -140,6 +142,8 @@ int run_scenario(const RunOptions& opt) {
     cfg.set_override(s);
   }
   cfg.get_string("scenario", name);  // recorded, so the resolved config names its scenario
+  // Wall time per phase, printed at the end of log.txt (core/phase_timer.hpp).
+  PhaseTimer::global().enable(cfg.section("run").get_bool("phase_timers", true));
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 
   // Validates everything; throws InputError before any output.
@@ -162,6 +166,9 @@ int run_scenario(const RunOptions& opt) {
            " with " + std::to_string(omp_get_max_threads()) + " threads");
   scenario->banner(log);
   RunContext ctx{dir, resume, omp_get_max_threads(), &log, !opt.no_plots};
+  // A resumed run's wall time covers what this invocation simulated, from its last row on.
+  const double t_start = resume ? last_time(dir + "/timeseries.csv") : 0.0;
+  PhaseTimer::global().reset();
   const auto t0 = std::chrono::steady_clock::now();
   int rc = 0;
   try {
@@ -176,7 +183,15 @@ int run_scenario(const RunOptions& opt) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   log.line("wall time " + to_text(wall) + " s; wall time per simulated second " +
-           to_text(wall / std::max(1e-300, scenario->output().end_time)) + " s/s");
+           to_text(wall / std::max(1e-300, scenario->output().end_time - t_start)) + " s/s");
+  if (PhaseTimer::global().enabled()) {
+    std::string table = PhaseTimer::global().table(wall);
+    table.pop_back();  // the last line's newline: Log::line adds one
+    log.line(
+        "wall time by phase (this invocation; run.phase_timers = false turns the timers "
+        "off):\n" +
+        table);
+  }
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"

@@ -1,5 +1,7 @@
 #include "scenarios/common/dem_driver.hpp"
 
+#include "core/phase_timer.hpp"
+
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -271,6 +273,7 @@ int DemDriver::run(const RunContext& ctx) {
     extra_snapshot_ = last && s % every_snapshot_ != 0;
     const bool row = s % every_row_ == 0 || last, snapshot = s % every_snapshot_ == 0 || last;
     const bool checkpoint = (every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last;
+    PhaseLap lap;
     if (row || snapshot || checkpoint) check_health(progress);
     if (row) write_row(stored0, !extra_row_);
     if (snapshot) write_snapshot(ctx.dir);
@@ -278,6 +281,7 @@ int DemDriver::run(const RunContext& ctx) {
       write_checkpoint(ctx.dir, stored0);
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
     }
+    lap.to(Phase::output);
     progress.update(solver_.time(), work);
   }
   restore_signals();

@@ -142,8 +142,9 @@ TEST_CASE("gas-only body-force channel gives the plane Poiseuille profile", "[sc
   for (const char* col : {"gas_mean_speed_m_s", "gas_kinetic_energy_J", "gas_mass_kg"})
     CHECK(ts.find(col) != std::string::npos);
   const std::string log = read_text(out + "/log.txt");
-  for (const char* s : {"tau (molecular)", "lattice Mach", "Reynolds number", "Dp / (rho c_s^2)",
-                        "gas steps per DEM step", "cells per axis"})
+  for (const char* s :
+       {"tau (molecular)", "lattice Mach", "Reynolds number", "Dp / (rho c_s^2)",
+        "gas steps per DEM step", "cells per axis", "wall time by phase", "gas: stream-collide"})
     CHECK(log.find(s) != std::string::npos);
   fs::remove_all(out);
 }
