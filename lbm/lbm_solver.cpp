@@ -154,6 +154,13 @@ void LbmSolver::rebuild_links() {
           build_outlet(b.links, flags_, b.outlet_density, b.outlet_extrapolate, b.outlet_backflow);
     b.wall_cells = b.wall_function ? build_wall_function_cells(b.links) : WallFunctionCells{};
   }
+  bool any_wall_function = false;
+  for (const Body& b : bodies_) any_wall_function = any_wall_function || b.wall_function;
+  for (auto& a : cell_moments_)
+    if (any_wall_function)
+      a.assign(std::size_t(grid().storage_cells()), 0.0);
+    else
+      std::vector<double>().swap(a);
   links_dirty_ = false;
 }
 
@@ -321,19 +328,28 @@ void LbmSolver::step() {
   });
   with_forcing(
       [&](const auto& forcing) {
-        std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, forcing); },
-                   settings_.collision);
+        const auto collide = [&](const auto& policy) {
+          std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, policy); },
+                     settings_.collision);
+        };
+        if (cell_moments_[0].empty()) return collide(forcing);
+        const MomentFields out{
+            cell_moments_[0].data(),
+            {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
+        collide(StoreMoments<std::decay_t<decltype(forcing)>>{forcing, out});
       },
       true);
   lap.to(Phase::lbm_collide_stream);
   state_ = after_step(state_);
   const WernerWengle law{viscosity(settings_.collision)};
-  const StepForce step_force{settings_.body_force, force_[0], force_[1], force_[2]};
+  const MomentFields moments{
+      cell_moments_[0].data(),
+      {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
   for (Body& b : bodies_)
     b.load = b.outlet_density > 0
                  ? apply_anti_bounce_back(pdf_, state_, b.links, b.outlet, b.origin)
              : b.wall_function ? apply_wall_function(pdf_, state_, b.links, b.wall_cells, law,
-                                                     step_force, settings_.wall_density, b.origin)
+                                                     moments, settings_.wall_density, b.origin)
                                : apply_bounce_back(pdf_, state_, b.links, b.origin);
   add_mass_sources();
   ++steps_;

@@ -206,6 +206,9 @@ class LbmSolver {
   std::vector<MassSource> mass_sources_;
   std::vector<double> eps_, alpha_;                   // per storage cell, when porosity is enabled
   mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
+  // rho and u / eps of the last collision per storage cell, kept while a body has the wall
+  // function (forcing/moment_store.hpp); empty otherwise.
+  std::array<std::vector<double>, 4> cell_moments_;
   double beta_ = 0;
   AaState state_ = AaState::natural;
   long steps_ = 0;

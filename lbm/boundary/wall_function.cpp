@@ -83,9 +83,7 @@ WallFunctionCells build_wall_function_cells(const BounceBackLinks& links) {
 
 WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
-                             const StepForce& force, double rho_w, const Vec3& origin) {
-  const Grid& g = pdf.grid();
-  const AaState before = after_step(now);  // the state the step started from
+                             const MomentFields& moments, double rho_w, const Vec3& origin) {
   const WernerWengleCell cell_law(law);
   // The summand applies its cell's links as a side effect: deterministic_sum calls it once per i.
   return deterministic_sum(
@@ -94,24 +92,12 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
         const std::size_t k0 = cells.first[i], k1 = cells.first[i + 1];
         Vec3 slip = Vec3::Zero();
         if (cells.area[i] > 0) {
-          // The cell's post-collision populations, where the step stored them.
-          const auto [x, y, z] = g.coordinates(cells.cell[i]);
-          double* out[kQ];
-          write_pointers(pdf, before, x, y, z, out);
-          double rho = 0;
-          Vec3 j = Vec3::Zero();
-          for (int q = 0; q < kQ; ++q) {
-            rho += *out[q];
-            j += *out[q] * Vec3(kCx[q], kCy[q], kCz[q]);
-          }
-          Vec3 fc = force.uniform;
-          if (!force.x.empty()) {
-            const Index c = cells.cell[i];
-            fc += Vec3(force.x[std::size_t(c)], force.y[std::size_t(c)], force.z[std::size_t(c)]);
-          }
-          j -= 0.5 * fc;
+          // The cell's density and velocity as its collision this step saw them.
+          const std::size_t c = std::size_t(cells.cell[i]);
+          const double rho = moments.rho[c];
+          const Vec3 u(moments.u[0][c], moments.u[1][c], moments.u[2][c]);
           const Vec3& n = cells.normal[i];
-          const Vec3 ut = j / rho - (j / rho).dot(n) * n;
+          const Vec3 ut = u - u.dot(n) * n;
           const double speed = ut.norm();
           Vec3 p = Vec3::Zero();  // momentum the links carry into the wall
           for (std::size_t k = k0; k < k1; ++k) {

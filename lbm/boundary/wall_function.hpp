@@ -20,8 +20,9 @@
 // cell, so inside the viscous sublayer the function differs from no slip only by the profile's
 // curvature (in Poiseuille flow a uniform shift of F / (8 nu); tests/lbm/test_wall_function.cpp).
 // Staircase limits: at a concave edge within one body the cell's area 6 |sum w_q c_q| is about
-// 1.2 where two faces give 2, and the normal is the diagonal. In porous cells the velocity read
-// here lacks the porous drag's half-step share (coupled runs with particles at walls).
+// 1.2 where two faces give 2, and the normal is the diagonal. The cell's velocity is the one its
+// collision relaxed towards (forcing/moment_store.hpp): half-force shift and, in porous cells, the
+// implicit drag included, divided by eps (the interstitial gas velocity the law is written for).
 //
 // Imposition, per fluid cell next to the wall (its links are contiguous in the body's list):
 // with post-collision populations f_q*, the links give the wall F = sum_q c_q (2 f_q* + corr_q)
@@ -39,6 +40,7 @@
 #include "core/types.hpp"
 #include "lbm/aa_pattern.hpp"
 #include "lbm/boundary/bounce_back.hpp"
+#include "lbm/forcing/moment_store.hpp"
 #include "lbm/pdf_field.hpp"
 
 #include <array>
@@ -84,21 +86,13 @@ struct WallFunctionCells {
 /// Groups a body's links (build_links: contiguous per fluid cell) by cell.
 WallFunctionCells build_wall_function_cells(const BounceBackLinks& links);
 
-/// The force density acting during the step [lattice units]: uniform plus per storage cell (empty
-/// spans: none). The cell's velocity is the step's mean, (sum_q c_q f_q* - F / 2) / rho, the same
-/// half-force shift as the collision's (Guo, Zheng & Shi 2002).
-struct StepForce {
-  Vec3 uniform = Vec3::Zero();
-  std::span<const double> x, y, z;
-};
-
 /// Applies the links of a body at rest with the wall function, for the state `now` the step has
 /// just produced (bounce_back.hpp); returns the wall's force, torque about `origin` and the mass
 /// given to the fluid (round-off), bitwise the same for any thread count. Writes each link's
 /// correction into `links` (the last step's slip terms, for inspection).
 WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
-                             const StepForce& force, double rho_w,
+                             const MomentFields& moments, double rho_w,
                              const Vec3& origin = Vec3::Zero());
 
 }  // namespace lbdem::lbm
