@@ -13,7 +13,8 @@ namespace lbdem {
 
 enum class Phase : int {
   lbm_collide_stream,           // the fused stream-collide sweep
-  lbm_boundaries,               // outlet sampling, bounce-back / wall function, mass sources
+  lbm_boundaries,               // link rebuilds, outlet sampling, bounce-back / wall function,
+                                // mass sources
   dem_integration,              // half kick and drift
   dem_neighbour_search,         // rebuilds: binning, sort, pair list
   dem_pair_contacts,            // particle-particle forces
@@ -21,7 +22,7 @@ enum class Phase : int {
   dem_bookkeeping,              // contact events, wall loads, external work
   coupling_porosity,            // locating particles and mapping their volume to cells
   coupling_interpolation_drag,  // gas fields at the particles, drag, the gas's source terms
-  output,                       // time series, snapshots, checkpoints
+  output,                       // health check, time series, snapshots, checkpoints
   count
 };
 

@@ -326,6 +326,7 @@ void LbmSolver::step() {
     for (Body& b : bodies_)
       if (b.outlet_density > 0) sample_outlet_velocity(pdf_, state_, forcing, b.outlet);
   });
+  lap.to(Phase::lbm_boundaries);
   with_forcing(
       [&](const auto& forcing) {
         const auto collide = [&](const auto& policy) {

@@ -20,7 +20,6 @@
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
-#include "scenarios/common/study_case.hpp"
 #include "scenarios/jet_mill/jet_mill_study.hpp"
 #include "scenarios/rheometer/rheometer_study.hpp"
 
@@ -166,8 +165,10 @@ int run_scenario(const RunOptions& opt) {
            " with " + std::to_string(omp_get_max_threads()) + " threads");
   scenario->banner(log);
   RunContext ctx{dir, resume, omp_get_max_threads(), &log, !opt.no_plots};
-  // A resumed run's wall time covers what this invocation simulated, from its last row on.
-  const double t_start = resume ? last_time(dir + "/timeseries.csv") : 0.0;
+  // A resumed run's wall time covers what this invocation simulated, from its checkpoint on.
+  const double t_start = resume && fs::exists(dir + "/checkpoint.h5")
+                             ? H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem")
+                             : 0.0;
   PhaseTimer::global().reset();
   const auto t0 = std::chrono::steady_clock::now();
   int rc = 0;

@@ -30,8 +30,12 @@ def fail(msg):
 
 
 def columns(path):
+    """The CSV's columns as arrays; {} with a warning if the file is missing (that case's panel
+    stays empty: one case without output must not cost the others their figures)."""
     if not os.path.isfile(path):
-        fail(f"no {path} (run lbdem-jet-mill-maps, or ./lbdem study jet_mill)")
+        print(f"jet_mill_figures: warning: no {path} (run lbdem-jet-mill-maps, or ./lbdem study "
+              "jet_mill)", file=sys.stderr)
+        return {}
     with open(path, newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     if not rows:
@@ -87,6 +91,8 @@ def main():
     ap.add_argument("--radius", type=float, default=0.025, help="chamber radius [m]")
     a = ap.parse_args()
     root, cases = a.root, a.cases
+    if not os.path.isdir(root):
+        fail(f"no folder {root}")
     win = f"study time {a.t0 - a.offset:.3g}-{a.t1 - a.offset:.3g} s"
 
     fig, axes = panels(len(cases))
@@ -116,6 +122,7 @@ def main():
     save(fig, os.path.join(root, "speed_map.png"))
 
     fig, axes = panels(len(cases))
+    im = None
     for ax, c in zip(axes, cases):
         path = os.path.join(root, c, "mill_gas_midplane.csv")
         if os.path.isfile(path):
@@ -150,6 +157,8 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for i, c in enumerate(cases):
         t = columns(os.path.join(root, c, "timeseries.csv"))
+        if not t:
+            continue
         ax.plot(t["time_s"] - a.offset, 1e3 * t["kinetic_energy_J"], color=f"C{i}", label=c)
     ax.axvspan(a.t0 - a.offset, a.t1 - a.offset, color="0.9", zorder=0, label="window")
     ax.set_xlabel("study time [s] (run time less the gas spin-up)")

@@ -48,8 +48,11 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
+// A shell word: single quotes, each ' inside written as '\''.
 std::string quoted(const std::string& s) {
-  return "'" + s + "'";
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
 }
 
 // Rows of a CSV with a header, each a map from column name to its text.
@@ -149,13 +152,24 @@ int run_jet_mill_study(const StudyOptions& opt) {
     if (const int rc = run_study_case(root, sc, run_opt, "jet_mill study"); rc != 0) return rc;
   }
 
-  // Every case of the folder with output; the figures' window in run time.
+  // Every case of the folder that has reached the window's end (with the feed at the presets'
+  // time, which sets the window); the figures' window in run time.
   const double from = spin_up + (opt.quick ? kQuickFrom : kFrom);
   const double to = spin_up + (opt.quick ? kQuickEnd : kTo);
   std::vector<const Case*> present;
   for (const auto& c : cases()) {
     const std::string dir = root + "/" + c.name;
-    if (fs::exists(dir + "/config.toml") && last_time(dir + "/timeseries.csv") > from)
+    if (!fs::exists(dir + "/config.toml")) continue;
+    const double reached = last_time(dir + "/timeseries.csv");
+    const double start =
+        Config::from_file(dir + "/config.toml").section("inflow").get("start", spin_up);
+    if (start != spin_up)
+      std::cerr << "jet_mill study: " << c.name << " feeds from " << start << " s, not " << spin_up
+                << " s: left out (the window is the same for all cases)\n";
+    else if (reached < to - 1e-9)
+      std::cerr << "jet_mill study: " << c.name << " has reached " << reached
+                << " s, not yet the window's end (" << to << " s): left out of the figures\n";
+    else
       present.push_back(&c);
   }
   if (present.empty()) {
@@ -163,7 +177,13 @@ int run_jet_mill_study(const StudyOptions& opt) {
     return 0;
   }
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
+  // Outputs of an earlier invocation must not stand in for a tool that fails now.
+  for (const char* f : {"collisions.csv", "collisions_impact_speed.csv", "collisions_table.txt",
+                        "kinetic_energy_stats.csv", "kinetic_energy_spectra.csv",
+                        "kinetic_energy_table.txt", "study.csv"})
+    fs::remove(root + "/" + f);
   std::map<std::string, double> dem_dt;
+  double chamber_radius = 0;
   for (const Case* c : present) {
     const std::string dir = root + "/" + c->name;
     const Config cfg = Config::from_file(dir + "/config.toml");
@@ -171,7 +191,13 @@ int run_jet_mill_study(const StudyOptions& opt) {
     const FluidConfig f = read_fluid(cfg.section("fluid"), box.require_vec3("lo"),
                                      box.require_vec3("hi"), {false, false, false}, Vec3::Zero());
     const JetMillGeometry g = read_jet_mill(cfg.section("jet_mill"), f);
-    dem_dt[c->name] = cfg.section("dem").get("dt", 0.0);
+    chamber_radius = g.radius;
+    // The step the run took: the preset's, shortened to a whole fraction or multiple of the gas
+    // step (box.cpp), 8-35 % below dem.dt for these presets.
+    dem_dt[c->name] = conform_dem_step(cfg.section("dem").get("dt", 0.0), f.dt).dem_dt;
+    for (const char* m :
+         {"speed_map", "wall_profile", "positions", "gas_profile", "gas_midplane", "summary"})
+      fs::remove(dir + "/mill_" + m + ".csv");
     std::string cmd = quoted((bin / "lbdem-jet-mill-maps").string()) + " " + quoted(dir) +
                       " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g") + " --out " +
                       quoted(dir + "/mill");
@@ -194,7 +220,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
   if (!opt.no_plots && !python.empty()) {
     std::string plot = quoted(python) + " " + quoted(src + "/tools/jet_mill_figures.py") + " " +
                        quoted(root) + " --from " + fmt(from, "%.17g") + " --to " +
-                       fmt(to, "%.17g") + " --offset " + fmt(spin_up, "%.17g");
+                       fmt(to, "%.17g") + " --offset " + fmt(spin_up, "%.17g") + " --radius " +
+                       fmt(chamber_radius, "%.17g");
     for (const Case* c : present) plot += " " + c->name;
     if (system_ok(plot + " > /dev/null", "tools/jet_mill_figures.py") == 0)
       std::cout << "figures: " << fs::absolute(root).string() << "/*.png\n";

@@ -351,17 +351,19 @@ TEST_CASE("coarse-grained drag: a dilute cloud relaxes and settles alike as orig
     for (double t : times) {
       for (; double(step) * dt < t - 0.5 * dt; ++step) rig.interval();
       const auto& p = rig.dem->particles();
-      double w = 0, w2 = 0;
-      Vec3 m = Vec3::Zero(), m2 = Vec3::Zero();
-      for (std::size_t k = 0; k < p.size(); ++k) {
-        w += p.mass[k], w2 += p.mass[k] * p.mass[k];
-        m += p.mass[k] * p.v[k];
-        m2 += p.mass[k] * p.v[k].cwiseProduct(p.v[k]);
-      }
+      // The mass-weighted mean and its standard error: var = n / (n - 1) sum w^2 (v - m)^2 /
+      // (sum w)^2, the weights being the masses, which the velocities depend on.
+      double w = 0;
+      Vec3 m = Vec3::Zero(), s2 = Vec3::Zero();
+      for (std::size_t k = 0; k < p.size(); ++k) w += p.mass[k], m += p.mass[k] * p.v[k];
       m /= w;
-      const Vec3 var = (m2 / w - m.cwiseProduct(m)).cwiseMax(0.0);
+      for (std::size_t k = 0; k < p.size(); ++k) {
+        const Vec3 d = p.v[k] - m;
+        s2 += p.mass[k] * p.mass[k] * d.cwiseProduct(d);
+      }
+      const double n = double(p.size());
       c.mean.push_back(m);
-      c.err.push_back(var.cwiseSqrt() * std::sqrt(w2) / w);  // of a weighted mean
+      c.err.push_back((s2 * n / (n - 1)).cwiseSqrt() / w);
     }
     const auto& p = rig.dem->particles();
     double fall = 0, ref = 0;

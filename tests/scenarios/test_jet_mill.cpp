@@ -274,6 +274,24 @@ TEST_CASE("jet mill with particles: the feed delivers its mass into the chamber,
   for (std::size_t k = 0; k + 2 < x.size(); k += 3)
     if (std::hypot(x[k], x[k + 1]) > kRadius || x[k + 2] < 0 || x[k + 2] > 0.005) ++outside;
   CHECK(outside == 0);
+  // lbdem-jet-mill-maps on this run folder: the window 0-0.5 ms holds the snapshots at 0 (no
+  // particles yet) and at the end, so every parcel of the last one is one sample; all lie inside
+  // the chamber, so each falls in one x-y bin and one wall-distance bin, and the positions file
+  // lists each once.
+  const std::string maps =
+      (std::filesystem::path(LBDEM_CLI).parent_path() / "lbdem-jet-mill-maps").string() + " " +
+      out + " --from 0 --to 5e-4 --out " + out + "/mill > /dev/null";
+  REQUIRE(std::system(maps.c_str()) == 0);
+  const double parcels = double(x.size() / 3);
+  const auto samples = [](const Table& m) {
+    double n = 0;
+    for (const auto& row : m.rows) n += row[std::size_t(m.col("samples"))];
+    return n;
+  };
+  CHECK(samples(read_csv(out + "/mill_speed_map.csv")) == parcels);
+  CHECK(samples(read_csv(out + "/mill_wall_profile.csv")) == parcels);
+  CHECK(double(read_csv(out + "/mill_positions.csv").rows.size()) == parcels);
+  CHECK_FALSE(read_csv(out + "/mill_gas_profile.csv").rows.empty());
   std::filesystem::remove_all(out);
 }
 

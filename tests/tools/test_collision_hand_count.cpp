@@ -17,11 +17,12 @@ namespace {
 using lbdem::test::cli;
 using lbdem::test::tmpdir;
 
-// Beads of r = 1 mm, rho = 2500 kg/m^3 (m = 1.0472e-5 kg), linear spring k = 10 N/m (t_c = 3.2 ms
-// at the pair's reduced mass), e = 0.5, no friction, no gravity, in a closed 10 mm box. A and B
-// approach at 0.1 m/s each across a 2 mm gap and touch at 10 ms; C falls at 0.1 m/s onto the floor
-// from 1 mm and touches at 10 ms. By 50 ms A and B (0.05 m/s apart after the collision) are still
-// 2 mm or more from the x walls, C 5 mm from the top.
+// Beads of r = 1 mm, rho = 2500 kg/m^3 (m = 1.0472e-5 kg), linear spring k = 10 N/m (contact
+// time about 2.3 ms for the pair's reduced mass m/2, 3.2 ms against the floor), e = 0.5, no
+// friction, no gravity, in a closed 10 mm box. A and B approach at 0.1 m/s each across a 2 mm gap
+// and touch at 10 ms; C falls at 0.1 m/s onto the floor from 1 mm and touches at 10 ms. By 50 ms
+// A and B (0.05 m/s each after the collision) are more than 1 mm from the x walls, C 5 mm from
+// the top.
 const char* kCase = R"(scenario = "box"
 [run]
 end_time = 0.05

@@ -34,18 +34,23 @@ std::string num(double v) {
   return b;
 }
 
+// Snapshot times come from step counts times a step that is itself a rounded quotient: a snapshot
+// meant for 0.13 s can sit at 0.1300000000001 s. Window edges are compared with this slack, far
+// below any snapshot interval.
+constexpr double kTimeSlack = 1e-9;  // [s]
+
 // Indices of the snapshot times in [from, to]; and the last one at or before `to`.
 std::vector<std::size_t> in_window(const std::vector<double>& t, double from, double to) {
   std::vector<std::size_t> k;
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= from && t[i] <= to) k.push_back(i);
+    if (t[i] >= from - kTimeSlack && t[i] <= to + kTimeSlack) k.push_back(i);
   return k;
 }
 
 std::size_t last_before(const std::vector<double>& t, double to, const std::string& what) {
   std::size_t k = t.size();
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] <= to) k = i;
+    if (t[i] <= to + kTimeSlack) k = i;
   if (k == t.size()) throw ToolError("no " + what + " snapshot at or before " + num(to) + " s");
   return k;
 }
