@@ -1,5 +1,6 @@
 #include "scenarios/common/study_case.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "core/config.hpp"
+#include "core/error.hpp"
 #include "core/h5.hpp"
 #include "scenarios/run_command.hpp"
 
@@ -31,6 +33,14 @@ std::string full(double v) {
 }
 
 }  // namespace
+
+void check_case_names(const std::vector<std::string>& wanted, const std::vector<std::string>& known,
+                      const std::string& study) {
+  for (const auto& want : wanted)
+    if (std::find(known.begin(), known.end(), want) == known.end())
+      throw InputError("--cases", want, "no such " + study + " case",
+                       "did you mean '" + nearest(want, known) + "'? (./lbdem study --list)");
+}
 
 double last_time(const std::string& csv) {
   std::ifstream f(csv);

@@ -21,6 +21,10 @@ struct StudyCase {
 int run_study_case(const std::string& root, const StudyCase& c, const StudyOptions& opt,
                    const std::string& banner);
 
+/// Every name of --cases is one of `known`, else InputError naming the nearest known case.
+void check_case_names(const std::vector<std::string>& wanted, const std::vector<std::string>& known,
+                      const std::string& study);
+
 /// The last time_s of a run's timeseries.csv, 0 if none.
 double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).

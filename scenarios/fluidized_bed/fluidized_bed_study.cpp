@@ -74,10 +74,7 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   std::vector<const Case*> todo;
   std::vector<std::string> names;
   for (const auto& c : cases()) names.push_back(c.name);
-  for (const auto& want : opt.cases)
-    if (std::find(names.begin(), names.end(), want) == names.end())
-      throw InputError("--cases", want, "no such fluidized_bed case",
-                       "did you mean '" + nearest(want, names) + "'? (./lbdem study --list)");
+  check_case_names(opt.cases, names, "fluidized_bed");
   for (const auto& c : cases())
     if (opt.cases.empty() ||
         std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())

@@ -118,10 +118,7 @@ int system_ok(const std::string& cmd, const char* what) {
 int run_jet_mill_study(const StudyOptions& opt) {
   std::vector<std::string> names;
   for (const auto& c : cases()) names.push_back(c.name);
-  for (const auto& want : opt.cases)
-    if (std::find(names.begin(), names.end(), want) == names.end())
-      throw InputError("--cases", want, "no such jet_mill case",
-                       "did you mean '" + nearest(want, names) + "'? (./lbdem study --list)");
+  check_case_names(opt.cases, names, "jet_mill");
   if (opt.quick && opt.end_time > 0)
     throw InputError("--end-time", fmt(opt.end_time), "--quick sets its own end time",
                      "give --quick or --end-time, not both");

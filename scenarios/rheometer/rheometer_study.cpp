@@ -150,14 +150,9 @@ int run_rheometer_study(const StudyOptions& opt) {
     if (opt.cases.empty() ||
         std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())
       todo.push_back(&c);
-  for (const auto& want : opt.cases)
-    if (std::none_of(cases().begin(), cases().end(),
-                     [&](const Case& c) { return c.name == want; })) {
-      std::vector<std::string> names;
-      for (const auto& c : cases()) names.push_back(c.name);
-      throw InputError("--cases", want, "no such rheometer case",
-                       "did you mean '" + nearest(want, names) + "'? (./lbdem study --list)");
-    }
+  std::vector<std::string> names;
+  for (const auto& c : cases()) names.push_back(c.name);
+  check_case_names(opt.cases, names, "rheometer");
   const std::string root = opt.out.empty() ? "studies/rheometer" : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
