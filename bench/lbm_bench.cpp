@@ -74,7 +74,17 @@ void two_lattice_step(const PdfField& src, PdfField& dst, const Bgk& op) {
 
 struct Run {
   double mlups, e_ratio;
+  std::uint64_t hash = 0;  // FNV-1a of the final populations (solver scheme): bitwise checks
 };
+
+// FNV-1a over the bytes of n doubles: equal hashes for bitwise equal states (the scaling study
+// compares thread counts with it).
+std::uint64_t fnv1a(const double* p, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto* b = reinterpret_cast<const unsigned char*>(p);
+  for (std::size_t k = 0; k < n * sizeof(double); ++k) h = (h ^ b[k]) * 1099511628211ull;
+  return h;
+}
 
 Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, double u0,
         bool porous) {
@@ -106,7 +116,14 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
     Stopwatch clock;
     for (int w = 0; w < steps; ++w) solver.step();
     const double wall = clock.seconds();
-    return {double(n) * n * n * steps / wall / 1e6, mean_u2(solver.pdf(), solver.state()) / e0};
+    std::vector<double> f;  // interior populations only: the padding is never written
+    f.reserve(std::size_t(kQ) * n * n * n);
+    for (int q = 0; q < kQ; ++q)
+      for (int l = 0; l < n; ++l)
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) f.push_back(solver.pdf().at(q, solver.grid().index(i, j, l)));
+    return {double(n) * n * n * steps / wall / 1e6, mean_u2(solver.pdf(), solver.state()) / e0,
+            fnv1a(f.data(), f.size())};
   }
   // Streaming stores need rows starting on 64-byte boundaries (grid.hpp); copy cell by cell.
   const Grid padded(n, n, n, {true, true, true}, scheme == "nt");
@@ -177,12 +194,13 @@ int main(int argc, char** argv) {
         const double bytes = scheme == "ab" ? 456 : 304;
         std::printf(
             "lbdem LBM TGV N=%d, %d thread(s): %.1f MLUPS, E_ratio %.4f (theory %.3f), scheme %s, "
-            "%.0f B/cell = %.1f GB/s%s\n",
+            "%.0f B/cell = %.1f GB/s%s state_hash=%016llx\n",
             n, t, r.mlups, r.e_ratio, theory, porous ? "aa" : scheme.c_str(), bytes,
             r.mlups * bytes / 1e3,
             porous
                 ? " (porous TRT kernel with Darcy drag: the theory is the free decay, not this one)"
-                : "");
+                : "",
+            static_cast<unsigned long long>(r.hash));
         std::fflush(stdout);
       }
   return 0;
