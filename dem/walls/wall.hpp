@@ -9,20 +9,21 @@
 #include "dem/walls/cylinder_wall.hpp"
 #include "dem/walls/mesh_wall.hpp"
 #include "dem/walls/plane_wall.hpp"
+#include "dem/walls/tube_wall.hpp"
 
 namespace lbdem::dem {
 
 struct Wall {
   std::string name;
   int material = 0;
-  std::variant<PlaneWall, CylinderWall, MeshWall, BoxWall> shape;
+  std::variant<PlaneWall, CylinderWall, MeshWall, BoxWall, TubeWall> shape;
   Vec3 torque_origin = Vec3::Zero();  // torques are reported about this point [m]
   // Loads on the wall from the particles in the last step (deterministic sums).
   Vec3 force = Vec3::Zero();   // [N]
   Vec3 torque = Vec3::Zero();  // [N m]
 };
 
-/// Where an analytic wall (plane, cylinder or box) is seen from x at time t. Mesh walls have
+/// Where an analytic wall (plane, cylinder, box or tube) is seen from x at time t. Mesh walls have
 /// per-triangle contacts (MeshWall::closest) and must not be passed here.
 inline WallPoint analytic_wall_point(const Wall& w, const Vec3& x, double t) {
   return std::visit(

@@ -1,5 +1,6 @@
 #include "scenarios/jet_mill/jet_mill.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -92,6 +93,25 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
                        "a corner of the feed region lies outside the chamber",
                        "keep inflow.lo - inflow.hi inside the cylinder of radius " +
                            to_text(g.radius) + " m and height " + to_text(g.height) + " m");
+  if (g.classifier_height > 0) {
+    // The feed region must not reach into the classifier ring: radial range of the region's x-y
+    // rectangle against the ring's band, where their heights overlap.
+    const double cx = std::clamp(g.axis.x(), lo.x(), hi.x()),
+                 cy = std::clamp(g.axis.y(), lo.y(), hi.y());
+    const double r_min = std::hypot(cx - g.axis.x(), cy - g.axis.y());
+    double r_max = 0;
+    for (double x : {lo.x(), hi.x()})
+      for (double y : {lo.y(), hi.y()})
+        r_max = std::max(r_max, std::hypot(x - g.axis.x(), y - g.axis.y()));
+    const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
+    const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
+    if (r_max >= r_in && r_min <= r_out && hi.z() >= g.axis.z() + g.height - g.classifier_height)
+      throw InputError(inflow.path("lo"),
+                       to_text(lo.x()) + ", " + to_text(lo.y()) + ", " + to_text(lo.z()),
+                       "the feed region reaches into the classifier ring (radii " + to_text(r_in) +
+                           " - " + to_text(r_out) + " m)",
+                       "move inflow.lo - inflow.hi inside or outside the ring, or below it");
+  }
   dem::DemSolver& s = box_.solver();
   int material = 0;
   for (const dem::Wall& w : s.walls())
@@ -117,6 +137,21 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
   top.shape = p;
   top.torque_origin = p.point;
   box_.add_wall(std::move(top));
+  if (g.classifier_height > 0) {
+    // The solid tube, met from inside, outside and below (dem/walls/tube_wall.hpp).
+    dem::Wall ring;
+    ring.name = "classifier";
+    ring.material = material;
+    dem::TubeWall tube;
+    tube.axis = g.axis;
+    tube.r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
+    tube.r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
+    tube.z_hi = g.axis.z() + g.height;
+    tube.z_lo = tube.z_hi - g.classifier_height;
+    ring.shape = tube;
+    ring.torque_origin = g.axis;
+    box_.add_wall(std::move(ring));
+  }
 }
 
 double JetMillScenario::outlet_mass_flow() const {
@@ -178,6 +213,10 @@ void JetMillScenario::mill_banner(Log& log) const {
   log.derived("chamber height", g.height, "m", "(" + to_text(g.height / f.dx) + " cells)");
   log.derived("outlet (vortex finder) radius", g.outlet_radius, "m",
               "(" + to_text(g.outlet_radius / f.dx) + " cells)");
+  if (g.classifier_height > 0)
+    log.derived("classifier ring radius", g.classifier_radius, "m",
+                "(wall " + to_text(g.classifier_thickness / f.dx) + " cells thick, reaching " +
+                    to_text(g.classifier_height / f.dx) + " cells below the top plate)");
   if (g.nozzles.empty()) return;
   const Nozzle& q = g.nozzles.front();
   const double nu = f.nu();

@@ -26,9 +26,16 @@ double start_offset(const Nozzle& q, const Vec3& axis, double dx) {
 }
 }  // namespace
 
+bool JetMillGeometry::in_classifier(const Vec3& x) const {
+  if (classifier_height <= 0) return false;
+  const double r = std::hypot(x.x() - axis.x(), x.y() - axis.y());
+  return std::abs(r - classifier_radius) <= 0.5 * classifier_thickness &&
+         x.z() >= axis.z() + height - classifier_height;
+}
+
 bool JetMillGeometry::inside(const Vec3& x) const {
   const double dx = x.x() - axis.x(), dy = x.y() - axis.y();
-  return dx * dx + dy * dy <= radius * radius;
+  return dx * dx + dy * dy <= radius * radius && !in_classifier(x);
 }
 
 JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
@@ -46,6 +53,31 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                                 Range::closed(f.dx, 0.9 * g.radius,
                                               "give the vortex finder's radius in m, at least "
                                               "one cell and below the chamber radius"));
+  if (section.has("classifier")) {
+    // A ring between the outlet and the grinding zone, at least one gas cell thick (a thinner
+    // one would leave holes in the staircase), clear of the outlet's rim and the wall by a cell.
+    const Config c = section.section("classifier");
+    g.classifier_radius = c.require(
+        "radius", Range::closed(g.outlet_radius + f.dx, g.radius - f.dx,
+                                "give the ring's mean radius in m, between the outlet's rim and "
+                                "the chamber wall"));
+    g.classifier_thickness = c.get("thickness", f.dx, Range::positive("give the wall in m"));
+    if (g.classifier_thickness < f.dx * (1 - 1e-9))
+      throw InputError(c.path("thickness"), to_text(g.classifier_thickness),
+                       "the ring is thinner than a gas cell: its staircase would have holes",
+                       "give a thickness of at least fluid.dx = " + to_text(f.dx) + " m");
+    const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
+    const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
+    if (r_in < g.outlet_radius + f.dx || r_out > g.radius - f.dx)
+      throw InputError(c.path("thickness"), to_text(g.classifier_thickness),
+                       "the ring (radii " + to_text(r_in) + " - " + to_text(r_out) +
+                           " m) reaches the outlet's rim or the chamber wall",
+                       "keep it one cell clear of both: a thinner ring or another radius");
+    g.classifier_height = c.require(
+        "height", Range::closed(f.dx, g.height - 2 * f.dx,
+                                "give how far the ring reaches below the top plate in m, leaving "
+                                "at least two cells above the floor"));
+  }
   const Config n = section.section("nozzles");
   const int count = int(n.get_int("count", 4, Range::closed(1, 64)));
   const double angle =
@@ -104,6 +136,14 @@ int build_chamber(lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeomet
   wall.axis_point = g.axis;
   wall.radius = g.radius;
   lbm::mark_cylinder(gas, frame, wall, lbm::SolidSide::outside, chamber);
+  // The classifier ring: cells whose centre lies in its solid belong to the chamber's body (the
+  // same wall treatment, wall function included).
+  const lbm::Grid& cells = gas.grid();
+  if (g.classifier_height > 0)
+    for (int z = 0; z < cells.nz(); ++z)
+      for (int y = 0; y < cells.ny(); ++y)
+        for (int x = 0; x < cells.nx(); ++x)
+          if (g.in_classifier(f.cell_centre(x, y, z))) gas.set_cell(x, y, z, chamber);
   if (f.wall_function) gas.set_wall_function(chamber, true);
   // The vortex finder: the top plate's ghost cells over r < outlet_radius, at the reference
   // pressure (density 1: the gauge pressure of the outlet is zero).

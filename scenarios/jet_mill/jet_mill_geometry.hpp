@@ -51,12 +51,20 @@ struct JetMillGeometry {
   double height = 0;         // [m]
   double outlet_radius = 0;  // vortex finder in the top plate [m]
   std::vector<Nozzle> nozzles;
-  /// Whether SI point x lies inside the chamber's cylinder (the plates are the box's faces).
+  // Optional classifier ring hanging from the top plate: a tube of mean radius classifier_radius
+  // and wall thickness classifier_thickness reaching classifier_height below the plate (all 0:
+  // none). Gas and particles see the same ring (solid cells; a DEM tube mesh).
+  double classifier_radius = 0, classifier_thickness = 0, classifier_height = 0;
+  /// Whether SI point x lies in the classifier ring's solid.
+  bool in_classifier(const Vec3& x) const;
+  /// Whether SI point x lies inside the chamber's cylinder (the plates are the box's faces) and
+  /// not in the classifier ring.
   bool inside(const Vec3& x) const;
 };
 
 /// Reads [jet_mill] against the gas ([fluid] already read: the box must be the chamber's bounding
-/// box). Keys: outlet_radius [m]; [jet_mill.nozzles]: count, angle_deg (to the wall tangent),
+/// box). Keys: outlet_radius [m]; [jet_mill.classifier] (optional): radius, thickness (at least
+/// one gas cell), height [m]; [jet_mill.nozzles]: count, angle_deg (to the wall tangent),
 /// first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter [m], speed
 /// [m/s], mass_flow [kg/s per nozzle; default rho U pi d^2 / 4]. The jets turn counter-clockwise
 /// seen from +z. Throws InputError naming the key.

@@ -331,3 +331,62 @@ TEST_CASE("jet mill study: bad input names the option", "[scenarios][jet_mill]")
   CHECK(both.err.find("'--end-time'") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
 }
+
+TEST_CASE("jet mill classifier ring: solid for the gas where it stands, a wall for the particles",
+          "[scenarios][jet_mill]") {
+  // A ring of mean radius 7 mm, 1 mm thick (one cell), reaching 3 mm below the 5 mm roof, in the
+  // default preset on 1 mm cells. In the first gas snapshot, every cell whose centre lies in the
+  // ring's solid is solid (porosity 0) and every other cell inside the chamber is gas, the cells
+  // under the ring included; the particles get the wall "classifier" (its load columns), and the
+  // banner describes it.
+  const std::string out = tmpdir("jet_mill_ring");
+  const std::string ring =
+      " --set jet_mill.classifier.radius=0.007 --set jet_mill.classifier.thickness=1e-3"
+      " --set jet_mill.classifier.height=0.003";
+  const auto r = cli("run jet_mill" + kFeedPreset + " --out " + out + ring +
+                     " --threads 1 --set run.end_time=1e-5");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const lbdem::H5In grid(out + "/fluid.h5");
+  const auto o = grid.doubles("/grid/origin_m");
+  const double dx = grid.doubles("/grid/spacing_m").at(0);
+  const auto n = grid.int32s("/grid/cells");
+  const auto eps = lbdem::H5In(out + "/snapshots/fluid_000000.h5").doubles("/porosity");
+  REQUIRE(eps.size() == std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]));
+  int ring_cells = 0, wrong = 0;
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x) {
+        const double px = o[0] + x * dx, py = o[1] + y * dx, pz = o[2] + z * dx;
+        const double rc = std::hypot(px, py);
+        if (rc > kRadius) continue;  // outside the chamber: solid anyway
+        const bool in_ring = std::abs(rc - 0.007) <= 0.5e-3 && pz >= 0.002;
+        const double e =
+            eps[(std::size_t(z) * std::size_t(n[1]) + std::size_t(y)) * std::size_t(n[0]) +
+                std::size_t(x)];
+        ring_cells += in_ring;
+        if (in_ring != (e == 0.0)) ++wrong;
+      }
+  CHECK(ring_cells > 100);  // about 2 pi 7 mm x 1 mm x 3 mm / 1 mm^3 = 132
+  CHECK(wrong == 0);
+  const std::string log = lbdem::test::read_text(out + "/log.txt");
+  CHECK(log.find("classifier ring radius") != std::string::npos);
+  CHECK(lbdem::test::read_text(out + "/timeseries.csv").find("wall_classifier_force_z_N") !=
+        std::string::npos);
+  std::filesystem::remove_all(out);
+  // Bad input: a ring thinner than a cell (holes in the staircase), and one across the feed.
+  struct Case {
+    std::string set, key;
+  };
+  const std::vector<Case> bad = {
+      {" --set jet_mill.classifier.thickness=5e-4", "jet_mill.classifier.thickness"},
+      {" --set jet_mill.classifier.radius=0.012", "inflow.lo"},
+  };
+  for (const Case& c : bad) {
+    const auto b = cli("run jet_mill" + kFeedPreset + " --out " + out + ring + c.set);
+    INFO(c.set << ": " << b.err);
+    CHECK(b.code == 2);
+    CHECK(b.err.find("'" + c.key) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
