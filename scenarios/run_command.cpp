@@ -79,6 +79,16 @@ void make_plots(const std::string& dir, Log& log) {
   if (std::system(cmd.c_str()) != 0) log.line("warning: the plotting tools failed (" + cmd + ")");
 }
 
+// The phase table at the end of log.txt, for a finished or a stopped run alike.
+void log_phase_times(Log& log, std::chrono::steady_clock::duration elapsed) {
+  if (!PhaseTimer::global().enabled()) return;
+  std::string table = PhaseTimer::global().table(std::chrono::duration<double>(elapsed).count());
+  table.pop_back();  // the last line's newline: Log::line adds one
+  log.line(
+      "wall time by phase (this invocation; run.phase_timers = false turns the timers off):\n" +
+      table);
+}
+
 }  // namespace
 
 int run_study(const StudyOptions& opt) {
@@ -177,6 +187,7 @@ int run_scenario(const RunOptions& opt) {
   } catch (const Interrupted& e) {
     write_file_atomic(dir + "/status", "stopped (resume with ./lbdem run --resume " + dir + ")\n");
     log.line(std::string(e.what()) + "; resume with ./lbdem run --resume " + dir);
+    log_phase_times(log, std::chrono::steady_clock::now() - t0);
     return 130;
   } catch (...) {
     write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
@@ -185,14 +196,7 @@ int run_scenario(const RunOptions& opt) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   log.line("wall time " + to_text(wall) + " s; wall time per simulated second " +
            to_text(wall / std::max(1e-300, scenario->output().end_time - t_start)) + " s/s");
-  if (PhaseTimer::global().enabled()) {
-    std::string table = PhaseTimer::global().table(wall);
-    table.pop_back();  // the last line's newline: Log::line adds one
-    log.line(
-        "wall time by phase (this invocation; run.phase_timers = false turns the timers "
-        "off):\n" +
-        table);
-  }
+  log_phase_times(log, std::chrono::steady_clock::now() - t0);
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"
