@@ -17,8 +17,9 @@ Each case runs once per thread count (default: 1 up to the cores present). The b
 hash of their final state; the scenario runs are compared data set by data set in checkpoint.h5
 (h5py, bytes), so a result that changes with the thread count is reported, not hidden. The
 scenario runs' phase tables (end of log.txt) are plotted as well. Writes into DIR (default
-$TMPDIR/lbdem-bench/scaling-STAMP): scaling.csv, scaling.png, phases.csv, phases.png. Exit 0,
-1 if a result differed between thread counts, 2 on bad input.
+$TMPDIR/lbdem-bench/scaling-STAMP): scaling.csv, scaling.png, phases.csv, phases.png. Exit 0;
+1 if a result differed between thread counts or a run failed (the message says which); 2 on bad
+input.
 """
 import argparse
 import csv
@@ -58,10 +59,14 @@ def bench_case(build, case, threads, work):
         out, _ = run([f"{build}/bin/lbdem-bench-dem", "--n", "20000", "--steps", "2000",
                       "--cache", work, "--threads", str(threads)])
         m = re.search(r"(\S+)\s+particle-steps/s\s+loop_s=(\S+).*state_hash=(\w+)", out)
+        if not m:
+            fail(f"unexpected output of lbdem-bench-dem: {out.strip()[-300:]}", 1)
         return float(m.group(1)), "particle-steps/s", float(m.group(2)), m.group(3)
     out, secs = run([f"{build}/bin/lbdem-bench-lbm", "--n", "64", "--steps", "100",
                      "--threads", str(threads)])
     m = re.search(r"([\d.]+) MLUPS.*state_hash=(\w+)", out)
+    if not m:
+        fail(f"unexpected output of lbdem-bench-lbm: {out.strip()[-300:]}", 1)
     return float(m.group(1)), "MLUPS", 64**3 * 100 / float(m.group(1)) / 1e6, m.group(2)
 
 
@@ -140,7 +145,8 @@ def main():
             same = state == base[1]
             if not same:
                 differs = True
-                bad = ([k for k in state if state[k] != base[1].get(k)]
+                bad = ([k for k in sorted(set(state) | set(base[1]))
+                        if state.get(k) != base[1].get(k)]
                        if isinstance(state, dict) else ["state_hash"])
                 print(f"{case}: {t} threads differ from {threads[0]} in {', '.join(bad[:5])}",
                       file=sys.stderr)

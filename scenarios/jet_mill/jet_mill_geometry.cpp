@@ -54,25 +54,29 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                                               "give the vortex finder's radius in m, at least "
                                               "one cell and below the chamber radius"));
   if (section.has("classifier")) {
-    // A ring between the outlet and the grinding zone, at least one gas cell thick (a thinner
-    // one would leave holes in the staircase), clear of the outlet's rim and the wall by a cell.
+    // A ring between the outlet and the grinding zone. At least sqrt(2) cells thick: the longest
+    // D3Q19 link is sqrt(2) dx and the radius changes along it by at most its length, so no link
+    // joins gas cells on both sides (a 1-cell ring leaked along the diagonals at 45 degrees).
+    // Clear of the outlet's rim by a cell and of the wall by two (a gas cell between two walls
+    // would have no meaningful wall normal).
     const Config c = section.section("classifier");
     g.classifier_radius = c.require(
-        "radius", Range::closed(g.outlet_radius + f.dx, g.radius - f.dx,
+        "radius", Range::closed(g.outlet_radius + f.dx, g.radius - 2 * f.dx,
                                 "give the ring's mean radius in m, between the outlet's rim and "
                                 "the chamber wall"));
-    g.classifier_thickness = c.get("thickness", f.dx, Range::positive("give the wall in m"));
-    if (g.classifier_thickness < f.dx * (1 - 1e-9))
+    const double min_t = std::sqrt(2.0) * f.dx;
+    g.classifier_thickness = c.get("thickness", 1.5 * f.dx, Range::positive("give the wall in m"));
+    if (g.classifier_thickness < min_t * (1 - 1e-9))
       throw InputError(c.path("thickness"), to_text(g.classifier_thickness),
-                       "the ring is thinner than a gas cell: its staircase would have holes",
-                       "give a thickness of at least fluid.dx = " + to_text(f.dx) + " m");
+                       "the ring is thinner than sqrt(2) gas cells: diagonal links would cross it",
+                       "give a thickness of at least " + to_text(min_t) + " m (sqrt(2) fluid.dx)");
     const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
     const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
-    if (r_in < g.outlet_radius + f.dx || r_out > g.radius - f.dx)
+    if (r_in < g.outlet_radius + f.dx || r_out > g.radius - 2 * f.dx)
       throw InputError(c.path("thickness"), to_text(g.classifier_thickness),
                        "the ring (radii " + to_text(r_in) + " - " + to_text(r_out) +
-                           " m) reaches the outlet's rim or the chamber wall",
-                       "keep it one cell clear of both: a thinner ring or another radius");
+                           " m) comes within a cell of the outlet's rim or two of the wall",
+                       "a thinner ring or another radius");
     g.classifier_height = c.require(
         "height", Range::closed(f.dx, g.height - 2 * f.dx,
                                 "give how far the ring reaches below the top plate in m, leaving "
@@ -126,6 +130,23 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                          to_text(chord) + " m)",
                      "give a larger angle to the wall tangent, a smaller diameter, or a finer "
                      "fluid.dx");
+  if (g.classifier_height > 0) {
+    // The jets' sources must clear the ring as they clear the other walls (1.5 cells), where
+    // the ring reaches down to the sources' height: sampled along each source's axis.
+    const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
+    const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
+    const double s0 = start_offset(q, g.axis, f.dx);
+    const bool reaches = z + rs + clear > g.height - g.classifier_height;
+    for (int k = 0; k <= 16 && reaches; ++k) {
+      const Vec3 p = q.exit + (s0 + 2 * rs * k / 16.0) * q.dir;
+      const double r = std::hypot(p.x() - g.axis.x(), p.y() - g.axis.y());
+      if (r > r_in - rs - clear && r < r_out + rs + clear)
+        throw InputError(section.section("classifier").path("radius"), to_text(g.classifier_radius),
+                         "the jets' notional sources come within 1.5 cells of the classifier ring",
+                         "move the ring inwards, shorten it (classifier.height) or lower the "
+                         "nozzles");
+    }
+  }
   return g;
 }
 

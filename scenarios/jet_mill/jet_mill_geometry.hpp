@@ -53,7 +53,7 @@ struct JetMillGeometry {
   std::vector<Nozzle> nozzles;
   // Optional classifier ring hanging from the top plate: a tube of mean radius classifier_radius
   // and wall thickness classifier_thickness reaching classifier_height below the plate (all 0:
-  // none). Gas and particles see the same ring (solid cells; a DEM tube mesh).
+  // none). Gas and particles see the same ring (solid cells; an analytic DEM tube wall).
   double classifier_radius = 0, classifier_thickness = 0, classifier_height = 0;
   /// Whether SI point x lies in the classifier ring's solid.
   bool in_classifier(const Vec3& x) const;
@@ -64,10 +64,10 @@ struct JetMillGeometry {
 
 /// Reads [jet_mill] against the gas ([fluid] already read: the box must be the chamber's bounding
 /// box). Keys: outlet_radius [m]; [jet_mill.classifier] (optional): radius, thickness (at least
-/// one gas cell), height [m]; [jet_mill.nozzles]: count, angle_deg (to the wall tangent),
-/// first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter [m], speed
-/// [m/s], mass_flow [kg/s per nozzle; default rho U pi d^2 / 4]. The jets turn counter-clockwise
-/// seen from +z. Throws InputError naming the key.
+/// sqrt(2) gas cells, default 1.5), height [m]; [jet_mill.nozzles]: count, angle_deg (to the wall
+/// tangent), first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter
+/// [m], speed [m/s], mass_flow [kg/s per nozzle; default rho U pi d^2 / 4]. The jets turn
+/// counter-clockwise seen from +z. Throws InputError naming the key.
 JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& fluid);
 
 /// The lattice side of the geometry: solid cells outside the chamber (body "chamber"), the outlet
