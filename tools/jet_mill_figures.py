@@ -46,7 +46,7 @@ def columns(path):
 
 def save(fig, path):
     tmp = path + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
+    fig.savefig(tmp, dpi=110, format="png", bbox_inches="tight")
     plt.close(fig)
     os.replace(tmp, path)  # a viewer never sees a half-written PNG
 
