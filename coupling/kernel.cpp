@@ -24,6 +24,11 @@ double triweight_variance(double r) {
   return s2 / s0;
 }
 
+// A plane mask for ParticleKernel::filter: null (every plane) before the first locate().
+const std::uint8_t* planes(const std::vector<std::uint8_t>& mask) {
+  return mask.empty() ? nullptr : mask.data();
+}
+
 void require_size(std::size_t got, std::size_t want, const char* what) {
   if (got != want)
     throw std::invalid_argument(std::string("ParticleKernel: ") + what + " has " +
@@ -97,8 +102,8 @@ std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags
   return solid;
 }
 
-void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out,
-                                 int axis) const {
+void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
+                                 const std::uint8_t* planes) const {
   const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz(), h = half_;
   const bool wrap_x = grid_.periodic(0);
   out.resize(in.size());
@@ -107,20 +112,24 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
   for (int z = 0; z < nz; ++z)
     for (int y = 0; y < ny; ++y) {
       double* o = out.data() + cell(0, y, z);
-      if (axis == 0) {
+      if (planes && !planes[z]) {
+        for (int x = 0; x < nx; ++x) o[x] = 0;
+      } else if (axis == 0) {
         // The row with H cells of halo on each side (wrapped, or zero beyond a non-periodic face:
         // the taps there are the ones the tap list leaves out), so that each tap is one
         // contiguous, vectorisable sweep; taps are added in the same order, k = -H..H.
         thread_local std::vector<double> pad;
         pad.resize(std::size_t(nx + 2 * h));
         const double* row = in.data() + cell(0, y, z);
-        for (int i = -h; i < nx + h; ++i) {
-          double v = 0;
-          if (wrap_x)
-            v = row[((i % nx) + nx) % nx];
-          else if (i >= 0 && i < nx)
-            v = row[i];
-          pad[std::size_t(i + h)] = v;
+        std::copy(row, row + nx, pad.begin() + h);
+        for (int i = 1; i <= h; ++i) {
+          double lo = 0, hi = 0;
+          if (wrap_x) {
+            lo = row[((-i % nx) + nx) % nx];
+            hi = row[(nx - 1 + i) % nx];
+          }
+          pad[std::size_t(h - i)] = lo;
+          pad[std::size_t(nx - 1 + h + i)] = hi;
         }
         for (int x = 0; x < nx; ++x) o[x] = 0;
         for (int k = -h; k <= h; ++k) {
@@ -139,10 +148,11 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
     }
 }
 
-void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out) const {
-  filter_axis(in, out, 0);
-  filter_axis(out, in, 1);
-  filter_axis(in, out, 2);
+void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out,
+                            const std::uint8_t* xy, const std::uint8_t* z) const {
+  filter_axis(in, out, 0, xy);
+  filter_axis(out, in, 1, xy);
+  filter_axis(in, out, 2, z);
 }
 
 void ParticleKernel::locate(std::span<const Vec3> positions) {
@@ -227,6 +237,26 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
     for (double wc : weight[p]) any = any || wc > 0;
     if (!any && unmapped_++ == 0) first_unmapped_ = Index(p);
   }
+
+  // Planes the particles touch: from the bins, whose z coordinate is the slowest (bin plane b
+  // holds the particles whose lower trilinear cell is b, or b - 1 on a non-periodic axis), each
+  // touching its lower plane and the one above.
+  const int nz = grid_.nz();
+  const Index per_plane = Index(bins_[0]) * bins_[1];
+  occupied_.assign(std::size_t(nz), 0);
+  for (int b = 0; b < bins_[2]; ++b) {
+    if (bin_start_[std::size_t((b + 1) * per_plane)] == bin_start_[std::size_t(b * per_plane)])
+      continue;
+    const int lower = grid_.periodic(2) ? b : b - 1;
+    for (int z : {lower, lower + 1}) {
+      const int q = grid_.periodic(2) ? z % nz : z;
+      if (q >= 0 && q < nz) occupied_[std::size_t(q)] = 1;
+    }
+  }
+  reach_.assign(std::size_t(nz), 0);
+  for (int z = 0; z < nz; ++z)
+    for (const Tap& t : tap_list_[2][std::size_t(z)])
+      if (occupied_[std::size_t(t.j)]) reach_[std::size_t(z)] = 1;
 }
 
 template <int NC>
@@ -242,7 +272,8 @@ void ParticleKernel::gather_sources(const std::vector<double>& qs,
 #pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (int z = 0; z < nz; ++z)
     for (int y = 0; y < ny; ++y) {
-      Index row_bin[4];  // by corner >> 1 = (cy, cz)
+      Index row_bin[4];                                                // by corner >> 1 = (cy, cz)
+      if (!occupied_.empty() && !occupied_[std::size_t(z)]) continue;  // no corner here: src is 0
       for (int r = 0; r < 4; ++r)
         row_bin[r] =
             Index(bins_[0]) * (bin_coord(1, y, r & 1) + Index(bins_[1]) * bin_coord(2, z, r >> 1));
@@ -323,7 +354,7 @@ void ParticleKernel::interpolate_local(std::span<const Vec3> field, std::vector<
 void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v) const {
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < in.size(); ++c) in[c] = gas_[c] ? in[c] : 0.0;
-  filter(in, v);
+  filter(in, v, planes(reach_), planes(occupied_));
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < v.size(); ++c) v[c] *= inv_z_[c];
 }
@@ -334,7 +365,7 @@ void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out
   for (std::size_t k = 0; k < qs.size(); ++k) qs[k] = q[bin_items_[k]];
   std::array<std::vector<double>, 3> src;
   gather_sources<1>(qs, src);
-  filter(src[0], out);
+  filter(src[0], out, planes(occupied_), planes(reach_));
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? out[c] * inv_v : 0.0;
@@ -351,7 +382,7 @@ void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) co
   std::vector<double> dep;
   const double inv_v = 1.0 / cell_volume();
   for (int a = 0; a < 3; ++a) {
-    filter(src[std::size_t(a)], dep);
+    filter(src[std::size_t(a)], dep, planes(occupied_), planes(reach_));
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
     for (std::size_t c = 0; c < dep.size(); ++c) out[c][a] = gas_[c] ? dep[c] * inv_v : 0.0;
   }

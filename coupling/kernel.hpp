@@ -143,10 +143,16 @@ class ParticleKernel {
   void pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad) const;
 
  private:
-  // One filter pass along `axis`: out(c) = sum_k g(|k|) in(c + k e_axis), taps in a fixed order.
-  void filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis) const;
-  // G * in over all three axes (in is overwritten as scratch).
-  void filter(std::vector<double>& in, std::vector<double>& out) const;
+  // One filter pass along `axis`: out(c) = sum_k g(|k|) in(c + k e_axis), taps in a fixed order,
+  // on the z planes where `planes` is nonzero (all if null); the other planes of out read 0.
+  void filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
+                   const std::uint8_t* planes) const;
+  // G * in over all three axes (in is overwritten as scratch): the x and y passes on the planes
+  // `xy`, the z pass on the planes `z` (null: all). Skipping a plane changes no bit of what is
+  // computed elsewhere: a deposit's x and y passes see only zeros off the particles' planes, and
+  // an interpolation samples only those planes.
+  void filter(std::vector<double>& in, std::vector<double>& out, const std::uint8_t* xy = nullptr,
+              const std::uint8_t* z = nullptr) const;
   // Source cells of NC components: src[a](c) = sum_p w_c(x_p) q_p[a] / Z(c), gathered per cell
   // from its 8 bins; qs holds the NC values of each particle in bin order.
   template <int NC>
@@ -185,6 +191,10 @@ class ParticleKernel {
   std::vector<std::uint32_t> bin_items_;  // particle indices, ascending within a bin
   std::vector<std::array<int, 3>> base_;
   std::vector<std::array<double, 8>> weight_;
+  // Per z plane, from locate(): a particle has a trilinear corner there (occupied_), or within the
+  // filter's reach of one (reach_). A bed fills a fraction of its column, and the filter passes,
+  // the bulk of the exchange's cost, need only these planes.
+  std::vector<std::uint8_t> occupied_, reach_;
   std::size_t unmapped_ = 0;
   Index first_unmapped_ = -1;
 };

@@ -488,3 +488,64 @@ TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 
   CHECK(same(one.u, two.u));
   CHECK(same(one.grad, two.grad));
 }
+
+TEST_CASE("Kernel: skipping the planes that hold no particle changes no bit", "[coupling]") {
+  // Equivalence test (not validation): the filter passes run only on the z planes the particles
+  // touch or reach (kernel.hpp). A bed in the lower planes is compared with the same bed plus
+  // spectators of zero volume, force and weight in every plane, which make every plane active:
+  // the cell fields and the values read at the bed's particles must agree bit for bit. Two boxes:
+  // walls in z with the bed on the lower face, and periodic z (the bed across the seam) with a
+  // kernel wider than a quarter of the box.
+  struct Box {
+    Grid grid;
+    double width;       // sigma [cells]
+    double z_lo, z_hi;  // the bed's extent [lattice z]
+  };
+  for (const Box& b : {Box{Grid(12, 10, 40, {true, true, false}), 2.0, -0.5, 5.0},
+                       Box{Grid(12, 10, 24, {true, true, true}), 3.0, 21.0, 27.0}}) {
+    const Grid& g = b.grid;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Vec3> bed;
+    for (int k = 0; k < 400; ++k)
+      bed.push_back(kFrame.to_si(
+          Vec3(12 * u(rng) - 0.5, 10 * u(rng) - 0.5, b.z_lo + (b.z_hi - b.z_lo) * u(rng))));
+    std::vector<Vec3> all = bed;
+    for (int z = 0; z < g.nz(); ++z) all.push_back(kFrame.to_si(Vec3(5.3, 4.1, z + 0.2)));
+    std::vector<Vec3> field(std::size_t(g.cells()));
+    for (Vec3& v : field) v = Vec3(u(rng), u(rng), u(rng)) - Vec3(0.5, 0.5, 0.5);
+
+    struct Out {
+      std::vector<double> eps;
+      std::vector<Vec3> force, at_bed;
+    };
+    auto run = [&](const std::vector<Vec3>& x) {
+      ParticleKernel kernel(g, kFrame, b.width * kDx);
+      kernel.locate(x);
+      std::vector<double> radii(x.size(), 0.0);
+      std::vector<Vec3> f(x.size(), Vec3::Zero());
+      for (std::size_t k = 0; k < bed.size(); ++k) {
+        radii[k] = 0.4 * kDx * (1 + 0.3 * std::sin(double(k)));
+        f[k] = Vec3(std::cos(double(k)), 1.0, -0.5 * std::sin(double(k)));
+      }
+      Out o;
+      kernel.gas_fraction(radii, kDefaultEpsMin, o.eps);
+      kernel.deposit(f, o.force);
+      kernel.interpolate(field, o.at_bed);
+      o.at_bed.resize(bed.size());
+      return o;
+    };
+    const Out alone = run(bed), crowded = run(all);
+    auto same = [](const auto& a, const auto& c) {
+      return a.size() == c.size() && std::memcmp(a.data(), c.data(), a.size() * sizeof(a[0])) == 0;
+    };
+    INFO("nz " << g.nz() << ", periodic z " << g.periodic(2));
+    CHECK(same(alone.eps, crowded.eps));
+    CHECK(same(alone.force, crowded.force));
+    CHECK(same(alone.at_bed, crowded.at_bed));
+    // The bed's force reaches a plane beyond the ones it touches (the test would pass trivially if
+    // nothing were deposited above them).
+    const auto top = std::size_t(g.compact_index(5, 5, int(std::floor(b.z_hi)) % g.nz()));
+    CHECK(crowded.force[top].norm() > 0);
+  }
+}
