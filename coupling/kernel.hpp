@@ -28,10 +28,11 @@
 // particles per cell) is 10^4 operations per cell and quantity against about 10^2 here.
 //
 // Determinism: nothing is scattered with atomics. locate() bins the particles by their lower
-// trilinear cell with a serial counting sort (stable, by particle index); deposition then gathers,
-// for each cell, from its 8 bins in a fixed order, and every filter pass writes each cell from one
-// thread with taps in a fixed order. Results are bitwise the same for any OpenMP thread count
-// (not for a permuted particle list: that reorders the sums within a bin, a round-off change).
+// trilinear cell with a serial counting sort (stable, by particle index); deposition then adds,
+// for each cell, the terms of its 8 bins in a fixed order (corner by corner, a bin plane per
+// thread), and every filter pass writes each cell from one thread with taps in a fixed order.
+// Results are bitwise the same for any OpenMP thread count (not for a permuted particle list: that
+// reorders the sums within a bin, a round-off change).
 //
 // Units: SI at the interface (positions [m], radii [m], fields as given); fields are over the
 // interior cells in compact order (Grid::compact_index, x fastest), as LbmSolver::velocity() and
@@ -147,14 +148,17 @@ class ParticleKernel {
   // on the z planes where `planes` is nonzero (all if null); the other planes of out read 0.
   void filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
                    const std::uint8_t* planes) const;
+  // filter_axis for axis 1 or 2 (a plane at a time).
+  void filter_planes(const std::vector<double>& in, std::vector<double>& out, int axis,
+                     const std::uint8_t* planes) const;
   // G * in over all three axes (in is overwritten as scratch): the x and y passes on the planes
   // `xy`, the z pass on the planes `z` (null: all). Skipping a plane changes no bit of what is
   // computed elsewhere: a deposit's x and y passes see only zeros off the particles' planes, and
   // an interpolation samples only those planes.
   void filter(std::vector<double>& in, std::vector<double>& out, const std::uint8_t* xy = nullptr,
               const std::uint8_t* z = nullptr) const;
-  // Source cells of NC components: src[a](c) = sum_p w_c(x_p) q_p[a] / Z(c), gathered per cell
-  // from its 8 bins; qs holds the NC values of each particle in bin order.
+  // Source cells of NC components: src[a](c) = sum_p w_c(x_p) q_p[a] / Z(c), the terms of each
+  // cell's 8 bins added corner by corner; qs holds the NC values of each particle in bin order.
   template <int NC>
   void gather_sources(const std::vector<double>& qs, std::array<std::vector<double>, 3>& src) const;
   // out[NC p + a] = sum_c w_c(x_p) v[a](c) over the 8 trilinear cells of each particle p.
