@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/h5.hpp"
+#include "core/memory.hpp"
 #include "dem/dem_solver.hpp"
 
 using namespace lbdem;
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "thread counts");
   app.add_option("--cache", cache, "folder for the settled bed");
   CLI11_PARSE(app, argc, argv);
+  const MemoryUse base = memory_use();  // the program before any particle
   if (n % 2500) {
     std::fprintf(stderr, "lbdem-bench-dem: --n must be a multiple of 2500\n");
     return 2;
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < steps; ++k) sol.step();
     const double loop = seconds_since(t0);
+    const MemoryUse memory = memory_use();
     const double z = 2.0 * double(sol.contacts_pp()) / double(sol.particles().size());
     // FNV-1a of the final positions and velocities: equal for bitwise equal runs (the scaling
     // study compares thread counts with it).
@@ -120,13 +123,15 @@ int main(int argc, char** argv) {
         hash = (hash ^ b[k]) * 1099511628211ull;
     }
     std::printf(
-        "%-10s %-44s %5d %14.4g  %-18s loop_s=%.3f rebuilds_in_window=%lld state_hash=%016llx\n",
+        "%-10s %-44s %5d %14.4g  %-18s loop_s=%.3f rebuilds_in_window=%lld state_hash=%016llx "
+        "rss_bytes=%zu base_rss_bytes=%zu peak_bytes=%zu\n",
         "lbdem",
         ("Hertz-Mindlin bed N=" + std::to_string(n) + ", dt=1e-6, " + std::to_string(steps) +
          " st, Z=" + std::to_string(z).substr(0, 4))
             .c_str(),
         t, double(sol.particles().size()) * steps / loop, "particle-steps/s", loop,
-        static_cast<long long>(sol.rebuilds() - rebuilds0), static_cast<unsigned long long>(hash));
+        static_cast<long long>(sol.rebuilds() - rebuilds0), static_cast<unsigned long long>(hash),
+        memory.resident, base.resident, memory.peak);
     std::fflush(stdout);
   }
   return 0;

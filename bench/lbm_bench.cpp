@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "lbm/lbm_solver.hpp"
 #include "lbm/moments.hpp"
@@ -75,6 +76,7 @@ void two_lattice_step(const PdfField& src, PdfField& dst, const Bgk& op) {
 struct Run {
   double mlups, e_ratio;
   std::uint64_t hash = 0;  // FNV-1a of the final populations (solver scheme): bitwise checks
+  MemoryUse memory;        // right after the timed loop, before any copy for the hash
 };
 
 // FNV-1a over the bytes of n doubles: equal hashes for bitwise equal states (the scaling study
@@ -116,6 +118,7 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
     Stopwatch clock;
     for (int w = 0; w < steps; ++w) solver.step();
     const double wall = clock.seconds();
+    const MemoryUse memory = memory_use();
     std::vector<double> f;  // interior populations only: the padding is never written
     f.reserve(std::size_t(kQ) * n * n * n);
     for (int q = 0; q < kQ; ++q)
@@ -123,7 +126,7 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
         for (int j = 0; j < n; ++j)
           for (int i = 0; i < n; ++i) f.push_back(solver.pdf().at(q, solver.grid().index(i, j, l)));
     return {double(n) * n * n * steps / wall / 1e6, mean_u2(solver.pdf(), solver.state()) / e0,
-            fnv1a(f.data(), f.size())};
+            fnv1a(f.data(), f.size()), memory};
   }
   // Streaming stores need rows starting on 64-byte boundaries (grid.hpp); copy cell by cell.
   const Grid padded(n, n, n, {true, true, true}, scheme == "nt");
@@ -149,7 +152,8 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
   Stopwatch clock;
   advance(steps);
   const double wall = clock.seconds();
-  return {double(n) * n * n * steps / wall / 1e6, mean_u2(*cur[0], AaState::natural) / e0};
+  return {double(n) * n * n * steps / wall / 1e6, mean_u2(*cur[0], AaState::natural) / e0, 0,
+          memory_use()};
 }
 
 }  // namespace
@@ -181,6 +185,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  const MemoryUse base = memory_use();  // the program before any lattice
   const Bgk op = Bgk::from_tau(tau);
   for (const std::string& scheme : schemes)
     for (int n : sizes)
@@ -194,13 +199,15 @@ int main(int argc, char** argv) {
         const double bytes = scheme == "ab" ? 456 : 304;
         std::printf(
             "lbdem LBM TGV N=%d, %d thread(s): %.1f MLUPS, E_ratio %.4f (theory %.3f), scheme %s, "
-            "%.0f B/cell = %.1f GB/s%s state_hash=%016llx\n",
+            "%.0f B/cell = %.1f GB/s%s state_hash=%016llx rss_bytes=%zu base_rss_bytes=%zu "
+            "peak_bytes=%zu\n",
             n, t, r.mlups, r.e_ratio, theory, porous ? "aa" : scheme.c_str(), bytes,
             r.mlups * bytes / 1e3,
             porous
                 ? " (porous TRT kernel with Darcy drag: the theory is the free decay, not this one)"
                 : "",
-            static_cast<unsigned long long>(r.hash));
+            static_cast<unsigned long long>(r.hash), r.memory.resident, base.resident,
+            r.memory.peak);
         std::fflush(stdout);
       }
   return 0;

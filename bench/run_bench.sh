@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # ./lbdem bench [--peers] [--n N] [--steps S] [--lbm-n "64 128"] [--no-dem] [--no-lbm]
 # ./lbdem bench scaling [--threads 1,2] [--case NAME]... [--out DIR]   (bench/scaling.py)
+# ./lbdem bench size [--dem-n N,...] [--lbm-n N,...] [--threads T] [--out DIR]   (bench/size.py)
 # lbdem's particle-steps/s on the settled-bed case of ../shared/bench (N = 20,000 and 100,000, or the
 # one --n) and its MLUPS on the periodic Taylor-Green box (64^3 and 128^3), on 1 and 2 threads; with
 # --peers, STREAM, Palabos, LIGGGHTS and LAMMPS run the same cases in the same invocation through
@@ -14,6 +15,11 @@ if [[ ${1:-} == scaling ]]; then
   shift
   exec /usr/bin/python3 "$ROOT/bench/scaling.py" "$BUILD_DIR" "$@"
 fi
+# ./lbdem bench size ...: cost and memory against problem size (bench/size.py).
+if [[ ${1:-} == size ]]; then
+  shift
+  exec /usr/bin/python3 "$ROOT/bench/size.py" "$BUILD_DIR" "$@"
+fi
 PEERS=0 SIZES="20000 100000" STEPS="" REPS=${REPS:-1} LBM_SIZES="64 128" DEM=1 LBM=1
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -23,7 +29,7 @@ while [[ $# -gt 0 ]]; do
     --lbm-n) LBM_SIZES="$2"; shift ;;
     --no-dem) DEM=0 ;;
     --no-lbm) LBM=0 ;;
-    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
     *) echo "lbdem bench: unknown option '$1' (known: --peers, --n N, --steps S, --lbm-n \"N...\", --no-dem, --no-lbm)" >&2; exit 2 ;;
   esac
   shift

@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""How cost and memory grow with problem size (issue 12 §1): throughput and resident bytes per
+particle and per cell, DEM from 10^4 to 10^6 particles, LBM from 32^3 to 256^3 cells.
+
+usage: ./lbdem bench size [--dem-n 10000,...] [--lbm-n 32,...] [--threads T] [--settle S]
+                          [--dem-steps K] [--lbm-steps K] [--out DIR]
+       (called as /usr/bin/python3 bench/size.py BUILD_DIR [options]; --dem-n '' or --lbm-n ''
+       leaves that part out)
+
+DEM: the Hertz-Mindlin bed of ../shared/bench (lbdem-bench-dem; 50 x 50 particles per layer, so
+N = 10^6 is a column 400 layers high), settled for S steps of 1e-5 s (default 5,000: the bed of
+the peer comparison settles 20,000, which at 10^6 particles would take an hour on one core; the
+contact number Z of each size is in the table), then K timed steps of 1e-6 s.
+LBM: the coupled gas kernel (lbdem-bench-lbm --porous: TRT, Guo-Zhao porous form, per-cell force
+and velocity sums) on the periodic Taylor-Green box, K timed steps.
+
+Each size runs in a process of its own. Memory is the resident set right after the timed loop
+less that of the program before it built anything (/proc/self/status, core/memory.hpp), divided
+by the particles or interior cells; the peak (setup temporaries included) is in the CSV too. For
+the LBM the table sets it beside what the solver's fields need: 19 x 8 B of populations (AA
+pattern, one lattice), 3 x 8 B of force, 2 x 8 B of porosity and drag, 3 x 8 B of velocity sums
+and a 1 B flag per stored cell, stored cells being (N + 2)^3 with the ghost layer. At small sizes
+the fixed cost of the process (OpenMP thread stacks, about 10 MB) dominates.
+Writes DIR/size.csv and DIR/size.png (default DIR: $TMPDIR/lbdem-bench/size-STAMP). Exit 0; 1 if
+a run failed; 2 on bad input.
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless
+import matplotlib.pyplot as plt  # noqa: E402
+
+LBM_FIELD_BYTES = 19 * 8 + 3 * 8 + 2 * 8 + 3 * 8 + 1  # per stored cell, see the docstring
+
+
+def fail(msg, code=2):
+    print(f"lbdem bench size: {msg}", file=sys.stderr)
+    sys.exit(code)
+
+
+def sizes(text, name, check):
+    if text.strip() == "":
+        return []
+    try:
+        vals = [int(v) for v in text.split(",")]
+    except ValueError:
+        fail(f"{name} '{text}': give a comma-separated list of integers")
+    for v in vals:
+        msg = check(v)
+        if msg:
+            fail(f"{name} {v}: {msg}")
+    return vals
+
+
+def run(cmd):
+    t0 = time.monotonic()
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        fail(f"'{' '.join(cmd)}' failed (exit {p.returncode}): {p.stderr.strip()[-400:]}", 1)
+    return p.stdout, time.monotonic() - t0
+
+
+def memory(out):
+    m = {k: int(re.search(rf"\b{k}=(\d+)", out).group(1))
+         for k in ("rss_bytes", "base_rss_bytes", "peak_bytes")}
+    return m["rss_bytes"] - m["base_rss_bytes"], m["peak_bytes"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description="lbdem cost and memory against problem size")
+    ap.add_argument("build")
+    ap.add_argument("--dem-n", default="10000,30000,100000,300000,1000000")
+    ap.add_argument("--lbm-n", default="32,64,128,256")
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--settle", type=int, default=5000)
+    ap.add_argument("--dem-steps", type=int, default=500)
+    ap.add_argument("--lbm-steps", type=int, default=20)
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    dem_n = sizes(a.dem_n, "--dem-n", lambda v: None if v > 0 and v % 2500 == 0 else
+                  "the bed has 2,500 particles per layer: give a positive multiple of 2500")
+    lbm_n = sizes(a.lbm_n, "--lbm-n", lambda v: None if 8 <= v <= 512 else
+                  "give a cube edge from 8 to 512 cells")
+    for name, v in (("--threads", a.threads), ("--settle", a.settle),
+                    ("--dem-steps", a.dem_steps), ("--lbm-steps", a.lbm_steps)):
+        if v < 1:
+            fail(f"{name} {v}: must be >= 1")
+    if not dem_n and not lbm_n:
+        fail("nothing to run: --dem-n and --lbm-n are both empty")
+    out = a.out or os.path.join(os.environ.get("TMPDIR", "/tmp"), "lbdem-bench",
+                                "size-" + time.strftime("%Y%m%d_%H%M%S"))
+    os.makedirs(out, exist_ok=True)
+    cache = os.path.join(out, "beds")
+    rows = []
+    for n in dem_n:
+        text, wall = run([f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--threads",
+                          str(a.threads), "--settle", str(a.settle), "--steps", str(a.dem_steps),
+                          "--cache", cache])
+        m = re.search(r"Z=(\S+?)\s+\d+\s+(\S+)\s+particle-steps/s", text)
+        if not m:
+            fail(f"unexpected output of lbdem-bench-dem: {text.strip()[-300:]}", 1)
+        used, peak = memory(text)
+        rows.append({"part": "dem", "size": n, "unit": "particle", "threads": a.threads,
+                     "throughput": float(m.group(2)), "throughput_unit": "particle-steps/s",
+                     "contacts_per_particle": float(m.group(1)), "bytes_per_unit": used / n,
+                     "expected_bytes_per_unit": "", "measured_over_expected": "",
+                     "resident_bytes": used, "peak_bytes": peak, "wall_s": round(wall, 1)})
+        print(f"DEM N={n:>9,}: {float(m.group(2)):10.4g} particle-steps/s  Z={m.group(1)}  "
+              f"{used / n:8.0f} B/particle  (peak {peak / 2**30:.2f} GiB)", flush=True)
+    for n in lbm_n:
+        text, wall = run([f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
+                          "--threads", str(a.threads), "--steps", str(a.lbm_steps),
+                          "--warmup", "2"])
+        m = re.search(r"([\d.]+) MLUPS", text)
+        if not m:
+            fail(f"unexpected output of lbdem-bench-lbm: {text.strip()[-300:]}", 1)
+        used, peak = memory(text)
+        cells = n**3
+        expected = LBM_FIELD_BYTES * (n + 2) ** 3 / cells
+        rows.append({"part": "lbm", "size": cells, "unit": "cell", "threads": a.threads,
+                     "throughput": float(m.group(1)) * 1e6, "throughput_unit": "cell-updates/s",
+                     "contacts_per_particle": "", "bytes_per_unit": used / cells,
+                     "expected_bytes_per_unit": expected,
+                     "measured_over_expected": used / cells / expected,
+                     "resident_bytes": used, "peak_bytes": peak, "wall_s": round(wall, 1)})
+        print(f"LBM {n:>3}^3: {float(m.group(1)):8.1f} MLUPS  {used / cells:6.1f} B/cell "
+              f"(fields {expected:.1f}: {used / cells / expected:.3f})  "
+              f"(peak {peak / 2**30:.2f} GiB)", flush=True)
+
+    tmp = os.path.join(out, "size.csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, os.path.join(out, "size.csv"))
+
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7))
+    for col, (part, label, scale, unit) in enumerate(
+            (("dem", "particles N", 1, "particle-steps/s"),
+             ("lbm", "cells N^3", 1e-6, "MLUPS"))):
+        r = [x for x in rows if x["part"] == part]
+        ax_t, ax_m = axes[0][col], axes[1][col]
+        if not r:
+            ax_t.set_visible(False)
+            ax_m.set_visible(False)
+            continue
+        s = [x["size"] for x in r]
+        ax_t.semilogx(s, [x["throughput"] * scale for x in r], "o-")
+        ax_t.set_ylabel(f"{unit} ({a.threads} thread(s))")
+        ax_t.set_ylim(bottom=0)
+        ax_m.semilogx(s, [x["bytes_per_unit"] for x in r], "o-", label="resident, measured")
+        if part == "lbm":
+            ax_m.semilogx(s, [x["expected_bytes_per_unit"] for x in r], "k--",
+                          label="solver fields")
+        ax_m.set_ylabel(f"bytes per {r[0]['unit']}")
+        ax_m.set_ylim(bottom=0)
+        ax_m.legend(fontsize=8)
+        for ax in (ax_t, ax_m):
+            ax.set_xlabel(label)
+            ax.grid(alpha=0.3)
+    fig.suptitle("lbdem cost and memory against size (DEM bed; coupled LBM kernel)")
+    fig.tight_layout()
+    tmp = os.path.join(out, "size.png.tmp")
+    fig.savefig(tmp, dpi=110, format="png")
+    os.replace(tmp, os.path.join(out, "size.png"))
+    print(f"size table: {out}/size.csv, plot: {out}/size.png")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
