@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "core/config.hpp"
@@ -63,6 +64,146 @@ std::pair<double, double> read_timing(const std::string& dir) {
   return {wall, simulated};
 }
 
+std::vector<std::pair<std::string, double>> read_phase_table(const std::string& log,
+                                                             std::streamoff from) {
+  std::ifstream in(log);
+  if (from > 0) in.seekg(from);
+  std::vector<std::pair<std::string, double>> table, current;
+  bool on = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("wall time by phase", 0) == 0) {
+      on = true;
+      current.clear();
+      continue;
+    }
+    if (!on) continue;
+    // "  gas: stream-collide      823.731 s   29.1 %": name, seconds, "s", share, "%".
+    std::istringstream ls(line);
+    std::vector<std::string> w;
+    for (std::string t; ls >> t;) w.push_back(t);
+    if (line.rfind("  ", 0) != 0 || w.size() < 5 || w[w.size() - 1] != "%" ||
+        w[w.size() - 3] != "s") {
+      on = false;
+      if (!current.empty()) table = current;
+      continue;
+    }
+    const std::size_t end = line.find(w[w.size() - 4], 2);
+    std::string name = line.substr(2, end - 2);
+    name.erase(name.find_last_not_of(' ') + 1);
+    try {
+      current.emplace_back(name, std::stod(w[w.size() - 4]));
+    } catch (const std::exception&) {
+      on = false;
+    }
+  }
+  if (on && !current.empty()) table = current;
+  return table;
+}
+
+namespace {
+
+// Groups of the phase timers (core/phase_timer.cpp names them "gas: ...", "DEM: ...",
+// "coupling: ...").
+void add_phase(PartCosts& p, const std::string& name, double seconds) {
+  if (name.rfind("gas:", 0) == 0)
+    p.gas += seconds;
+  else if (name.rfind("DEM:", 0) == 0)
+    p.dem += seconds;
+  else if (name.rfind("coupling:", 0) == 0)
+    p.coupling += seconds;
+  else
+    p.rest += seconds;
+}
+
+}  // namespace
+
+PartCosts part_costs(const std::string& dir) {
+  PartCosts p;
+  const auto [wall, simulated] = read_timing(dir);
+  if (!(wall > 0 && simulated > 0)) return p;
+  p.total = wall / simulated;
+  std::ifstream in(dir + "/study_phases.txt");
+  double sum = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t tab = line.find('\t');
+    if (tab == std::string::npos) continue;
+    const double sec = std::stod(line.substr(0, tab));
+    add_phase(p, line.substr(tab + 1), sec);
+    sum += sec;
+  }
+  if (!(sum > 0)) {
+    // No sums kept: the last invocation's shares of the summed wall time.
+    for (const auto& [name, sec] : read_phase_table(dir + "/log.txt")) {
+      add_phase(p, name, sec);
+      sum += sec;
+    }
+    p.from_shares = true;
+  }
+  if (!(sum > 0)) return p;
+  const double scale = p.total / sum;
+  p.gas *= scale;
+  p.dem *= scale;
+  p.coupling *= scale;
+  p.rest *= scale;
+  p.split = true;
+  return p;
+}
+
+double banner_number(const std::string& log, const std::string& key, bool after_equals) {
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("  " + key, 0) != 0) continue;
+    std::string rest = line.substr(2 + key.size());
+    if (after_equals) {
+      const std::size_t eq = rest.find("= ");
+      if (eq == std::string::npos) return 0.0;
+      rest = rest.substr(eq + 2);
+    }
+    std::istringstream ls(rest);
+    double v = 0;
+    return (ls >> v) ? v : 0.0;
+  }
+  return 0.0;
+}
+
+std::string speedup_columns(const std::string& dir, const std::string& ref_dir, double parcels,
+                            double parcels_ref) {
+  auto num = [](double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return std::string(b);
+  };
+  const PartCosts p = part_costs(dir);
+  std::string out;
+  if (p.split)
+    out = num(p.gas) + "," + num(p.dem) + "," + num(p.coupling);
+  else
+    out = ",,";
+  const PartCosts r = ref_dir.empty() ? PartCosts{} : part_costs(ref_dir);
+  const std::string log = dir + "/log.txt", ref_log = ref_dir + "/log.txt";
+  auto ratio = [&](double a, double b) { return a > 0 && b > 0 ? num(a / b) : std::string(); };
+  out += "," + ratio(r.total, p.total);
+  const double n = parcels > 0 ? parcels : banner_number(log, "particles");
+  const double n_ref = parcels_ref > 0 ? parcels_ref : banner_number(ref_log, "particles");
+  const double dt = banner_number(log, "time step dt"),
+               dt_ref = banner_number(ref_log, "time step dt");
+  const bool split = p.split && r.split;
+  out += "," + (split ? ratio(r.dem, p.dem) : std::string()) + "," +
+         (r.total > 0 ? ratio(n_ref * dt, n * dt_ref) : std::string());
+  const double cells = banner_number(log, "cells per axis", true),
+               cells_ref = banner_number(ref_log, "cells per axis", true);
+  const double gdt = banner_number(log, "gas time step dt"),
+               gdt_ref = banner_number(ref_log, "gas time step dt");
+  out += "," + (split && r.gas > 0 ? ratio(r.gas, p.gas) : std::string()) + "," +
+         (r.total > 0 ? ratio(cells_ref * gdt, cells * gdt_ref) : std::string());
+  std::string bound;
+  if (p.split) {
+    const double top = std::max({p.gas, p.dem, p.coupling});
+    bound = top == p.gas ? "gas" : top == p.dem ? "DEM" : "exchange";
+  }
+  return out + "," + bound;
+}
+
 int run_study_case(const std::string& root, const StudyCase& c, const StudyOptions& opt,
                    const std::string& banner) {
   const std::string dir = root + "/" + c.name;
@@ -90,6 +231,10 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
     for (const auto& s : opt.sets) ro.sets.push_back(s);
   }
   std::cout << "== " << banner << ": " << c.name << (ro.resume.empty() ? "" : " (resumed)") << "\n";
+  // The log grows by this invocation's lines; its phase table is the one after this offset.
+  std::streamoff log_before = 0;
+  if (!ro.resume.empty() && fs::exists(dir + "/log.txt"))
+    log_before = std::streamoff(fs::file_size(dir + "/log.txt"));
   const auto t0 = std::chrono::steady_clock::now();
   const int rc = run_scenario(ro);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -100,6 +245,33 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   write_file_atomic(dir + "/study_timing.txt",
                     full(wall0 + wall) + " " +
                         full(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_before)) + "\n");
+  // Phase seconds summed over the invocations, kept only while every invocation left its table
+  // (an earlier one without it, or a run killed before it wrote one, ends the sums: part_costs
+  // then falls back on shares).
+  const auto phases = read_phase_table(dir + "/log.txt", log_before);
+  const bool first = ro.resume.empty() || (wall0 == 0 && !fs::exists(dir + "/study_phases.txt"));
+  const bool kept = fs::exists(dir + "/study_phases.txt");
+  if (!phases.empty() && (first || kept)) {
+    std::map<std::string, double> sums;
+    std::vector<std::string> order;
+    std::ifstream in(dir + "/study_phases.txt");
+    for (std::string line; std::getline(in, line);) {
+      const std::size_t tab = line.find('\t');
+      if (tab == std::string::npos) continue;
+      const std::string name = line.substr(tab + 1);
+      if (!sums.count(name)) order.push_back(name);
+      sums[name] += std::stod(line.substr(0, tab));
+    }
+    for (const auto& [name, sec] : phases) {
+      if (!sums.count(name)) order.push_back(name);
+      sums[name] += sec;
+    }
+    std::string text;
+    for (const auto& name : order) text += full(sums[name]) + "\t" + name + "\n";
+    write_file_atomic(dir + "/study_phases.txt", text);
+  } else if (kept) {
+    fs::remove(dir + "/study_phases.txt");
+  }
   return rc;
 }
 

@@ -30,4 +30,39 @@ double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
 std::pair<double, double> read_timing(const std::string& dir);
 
+/// The phase table a run writes at the end of its log.txt ("wall time by phase"), the last one at
+/// or after byte `from`: (phase, seconds) in the log's order; empty if there is none.
+std::vector<std::pair<std::string, double>> read_phase_table(const std::string& log,
+                                                             std::streamoff from = 0);
+
+/// Wall seconds per simulated second of a case, whole and split by part (issue 12 §2: which part
+/// bounds the coarse-graining speed-up). The parts are the phase timers' groups, summed over the
+/// study's invocations (study_phases.txt); a case run before those sums were kept takes its last
+/// invocation's shares of the summed wall time (`from_shares`). total 0: no timing yet.
+struct PartCosts {
+  double total = 0, gas = 0, dem = 0, coupling = 0, rest = 0;
+  bool split = false, from_shares = false;
+};
+PartCosts part_costs(const std::string& dir);
+
+/// The coarse-graining speed-up columns of a study table (kSpeedupColumns, in that order) for the
+/// case in `dir` against the reference case in `ref_dir` (empty or without timing: the speed-ups
+/// are left blank): the case's wall seconds per simulated second for the gas, the DEM and the
+/// exchange; the measured speed-up, whole and of the DEM and gas parts, beside the part's ideal
+/// from the banners (DEM: parcels_ref / parcels x dt / dt_ref, which is l^4 when the step grows
+/// with l; gas: cells_ref / cells x its step over the reference's); and the part that takes most
+/// of the case's time, which bounds the speed-up.
+inline constexpr const char* kSpeedupColumns =
+    "gas_s_per_simulated_s,dem_s_per_simulated_s,coupling_s_per_simulated_s,speedup,"
+    "dem_speedup,dem_ideal_speedup,gas_speedup,gas_ideal_speedup,bounded_by";
+/// parcels, parcels_ref: the parcel counts where the banner's start count is not the run's (a
+/// feed); 0: the banners' "particles".
+std::string speedup_columns(const std::string& dir, const std::string& ref_dir, double parcels = 0,
+                            double parcels_ref = 0);
+
+/// The first number after `key` on the first log line that starts with two spaces and `key` (the
+/// banners' derived numbers), or after "= " on it with `after_equals` (e.g. "... = 60000 cells");
+/// 0 if none.
+double banner_number(const std::string& log, const std::string& key, bool after_equals = false);
+
 }  // namespace lbdem::scenarios

@@ -136,7 +136,8 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   table << "case,size_factor,cohesion_rule,bond_number,parcels,parcels_across,parcels_high,"
            "window_from_s,simulated_s,bed_height_m,bed_height_err_m,bed_height_std_m,"
            "pressure_drop_Pa,pressure_drop_err_Pa,pressure_drop_std_Pa,weight_per_area_Pa,"
-           "wall_s_per_simulated_s\n";
+           "wall_s_per_simulated_s,"
+        << kSpeedupColumns << "\n";
   for (const Case* c : present) {
     const std::string dir = root + "/" + c->name;
     const Config cfg = Config::from_file(dir + "/config.toml");
@@ -159,7 +160,12 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
               << fmt(it->second[2]);
     }
     table << "," << fmt(mass * 9.81 * (1 - 1.2 / rho) / area) << ","
-          << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string("")) << "\n";
+          << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""));
+    // Against the original (CG 1) at the same Bond number, when it has run.
+    const auto ref = std::find_if(present.begin(), present.end(),
+                                  [&](const Case* r) { return r->l == 1 && r->bond == c->bond; });
+    table << "," << speedup_columns(dir, ref == present.end() ? "" : root + "/" + (*ref)->name)
+          << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
   std::cout << "fluidized_bed study table: " << fs::absolute(root + "/study.csv").string() << "\n"

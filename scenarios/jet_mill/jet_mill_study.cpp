@@ -241,7 +241,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
          "freq_pw_per_original_per_s,rate_pp_change_per_doubling,dissipated_J,"
          "dissipated_normal_damping_J,dissipated_tangential_damping_J,dissipated_sliding_J,"
          "dissipated_rolling_J,dissipation_rate_W,dissipated_per_step_J,dissipated_per_kg_J_per_kg,"
-         "outlet_mass_kg,wall_s_per_simulated_s,speedup_vs_cg1\n";
+         "outlet_mass_kg,wall_s_per_simulated_s,speedup_vs_cg1,"
+      << kSpeedupColumns << "\n";
   for (const Case* c : present) {
     const std::string dir = root + "/" + c->name;
     const auto [removed, parcels] =
@@ -279,7 +280,16 @@ int run_jet_mill_study(const StudyOptions& opt) {
           << "," << fmt(get(cr, "dissipation_rate_W")) << ","
           << fmt(get(cr, "dissipated_J") * dem_dt[c->name] / span) << ","
           << fmt(get(cr, "dissipated_per_kg_J_per_kg")) << "," << fmt(removed) << "," << fmt(wps)
-          << "," << fmt(wall_cg1 / wps) << "\n";
+          << "," << fmt(wall_cg1 / wps);
+    // The split against CG 1 of the same grid set (the parcels fed, not the banner's zero).
+    const std::string ref = c->name.find("_fixed") != std::string::npos ? "cg1_fixed" : "cg1";
+    const std::string ref_dir = root + "/" + ref;
+    const double ref_parcels =
+        fs::exists(ref_dir + "/timeseries.csv")
+            ? last_and_max(ref_dir + "/timeseries.csv", "mass_removed_kg", "particles").second
+            : 0.0;
+    table << "," << speedup_columns(dir, ref_parcels > 0 ? ref_dir : "", parcels, ref_parcels)
+          << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
   std::cout << "jet_mill study table: " << fs::absolute(root + "/study.csv").string() << "\n"

@@ -160,7 +160,8 @@ int run_rheometer_study(const StudyOptions& opt) {
   table << "case,rule,size_factor,note,parcels,gap_parcel_diameters,parcels_across_blade,"
            "peak_torque_Nm,"
            "steady_torque_Nm,steady_torque_err_Nm,fluctuation_Nm,blocks,simulated_s,"
-           "wall_s_per_simulated_s\n";
+           "wall_s_per_simulated_s,"
+        << kSpeedupColumns << "\n";
   for (const Case* c : todo) {
     StudyCase sc{c->name, "rheometer", src + "/scenarios/rheometer/presets/" + c->preset + ".toml",
                  c->sets};
@@ -191,7 +192,11 @@ int run_rheometer_study(const StudyOptions& opt) {
           << fmt(cfg.section("rheometer").get("blade_height", 0.01) / (2 * l * r0)) << ","
           << fmt(ts.peak) << "," << fmt(ts.steady) << "," << fmt(ts.steady_err) << ","
           << fmt(ts.fluctuation) << "," << ts.blocks << "," << fmt(simulated) << ","
-          << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string("")) << "\n";
+          << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""));
+    // Speed-up against the original bed under the same contact law.
+    const std::string ref =
+        root + "/" + (c->rule.find("hertz") != std::string::npos ? "cg1_hertz" : "cg1");
+    table << "," << speedup_columns(dir, fs::exists(ref + "/log.txt") ? ref : "") << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
   // Torque overlay and spectra (tools/): the steady window of every case, labelled by case name.

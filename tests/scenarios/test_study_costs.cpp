@@ -1,0 +1,121 @@
+// The study tables' cost split (scenarios/common/study_case.hpp) on constructed run folders with
+// hand-computed answers: the phase table parser (the last table after an offset, names with
+// spaces and colons), the per-part wall seconds per simulated second from summed phases and from
+// the last invocation's shares, and the coarse-graining speed-up columns against their ideals.
+#include <catch2/catch.hpp>
+
+#include "scenarios/common/study_case.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace lbdem::scenarios;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+// A log as a run writes it: banner, progress, and a phase table per invocation.
+std::string log_text(int particles, double dem_dt, int cells, double gas_dt,
+                     const std::string& tables) {
+  std::ostringstream s;
+  s << "lbdem running fluidized_bed in x with 2 threads\n"
+    << "DEM derived numbers:\n"
+    << "  particles                                   " << particles << "          \n"
+    << "  time step dt                          " << dem_dt << " s        \n"
+    << "gas derived numbers:\n"
+    << "  cells per axis                                 20          x 20 x 150 = " << cells
+    << " cells, 9.12 MB of populations\n"
+    << "  gas time step dt                      " << gas_dt << " s        (Dp / (rho c_s^2))\n"
+    << tables;
+  return s.str();
+}
+
+std::string table(double gas, double dem, double coupling, double output) {
+  std::ostringstream s;
+  const double sum = gas + dem + coupling + output;
+  s << "wall time by phase (this invocation; run.phase_timers = false turns the timers off):\n"
+    << "  gas: stream-collide                 " << 0.75 * gas << " s   " << 75 * gas / sum << " %\n"
+    << "  gas: boundaries                     " << 0.25 * gas << " s   1.0 %\n"
+    << "  DEM: particle contacts              " << dem << " s   2.0 %\n"
+    << "  coupling: interpolation and drag    " << coupling << " s   3.0 %\n"
+    << "  output                              " << output << " s    0.2 %\n"
+    << "  rest (set-up, steering, plots)      0 s    0.0 %\n";
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("Study costs: the last phase table after an offset is read whole", "[scenarios]") {
+  const fs::path dir = fs::temp_directory_path() / "lbdem_test_study_costs_parse";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string first = log_text(100, 1e-6, 1000, 2e-6, table(8, 4, 2, 1));
+  write(dir / "log.txt", first + "resumed from checkpoint\n" + table(80, 40, 20, 10) +
+                             "t = 0.5 s progress after the table\n");
+  const auto all = read_phase_table((dir / "log.txt").string());
+  REQUIRE(all.size() == 6);
+  CHECK(all[0].first == "gas: stream-collide");
+  CHECK(all[0].second == Approx(60));
+  CHECK(all[3].first == "coupling: interpolation and drag");
+  CHECK(all[3].second == Approx(20));
+  CHECK(all[5].first == "rest (set-up, steering, plots)");
+  // From an offset inside the first invocation's lines: still the second table. From past the
+  // end: none.
+  CHECK(read_phase_table((dir / "log.txt").string(), 10)[2].second == Approx(40));
+  CHECK(read_phase_table((dir / "log.txt").string(), 1 << 20).empty());
+  CHECK(banner_number((dir / "log.txt").string(), "particles") == 100);
+  CHECK(banner_number((dir / "log.txt").string(), "gas time step dt") == Approx(2e-6));
+  CHECK(banner_number((dir / "log.txt").string(), "cells per axis", true) == 1000);
+  CHECK(banner_number((dir / "log.txt").string(), "no such key") == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("Study costs: parts per simulated second, and speed-ups against their ideals",
+          "[scenarios]") {
+  const fs::path root = fs::temp_directory_path() / "lbdem_test_study_costs";
+  fs::remove_all(root);
+  const fs::path ref = root / "cg1", cg = root / "cg2";
+  fs::create_directories(ref);
+  fs::create_directories(cg);
+  // Reference: 2,000 s of wall for 0.5 s simulated (4,000 s/s); its phases summed over the
+  // invocations in study_phases.txt: gas 1,000 s, DEM 800 s, coupling 150 s, rest 50 s.
+  write(ref / "log.txt", log_text(8000, 1e-6, 60000, 2e-6, table(1, 1, 1, 1)));
+  write(ref / "study_timing.txt", "2000 0.5\n");
+  write(ref / "study_phases.txt",
+        "750\tgas: stream-collide\n250\tgas: boundaries\n800\tDEM: particle contacts\n"
+        "150\tcoupling: interpolation and drag\n50\toutput\n");
+  // The parcels (l = 2): 1,000 parcels at twice the step, the same gas grid at 1.5 times its
+  // step; 300 s for 0.6 s (500 s/s), no sums kept, so the last table's shares: gas 50 %, DEM
+  // 20 %, coupling 20 %, rest 10 %.
+  write(cg / "log.txt", log_text(1000, 2e-6, 60000, 3e-6,
+                                 table(90, 10, 20, 10) + "resumed\n" + table(50, 20, 20, 10)));
+  write(cg / "study_timing.txt", "300 0.6\n");
+
+  const PartCosts r = part_costs(ref.string());
+  CHECK(r.split);
+  CHECK_FALSE(r.from_shares);
+  CHECK(r.total == Approx(4000));
+  CHECK(r.gas == Approx(2000));
+  CHECK(r.dem == Approx(1600));
+  CHECK(r.coupling == Approx(300));
+  CHECK(r.rest == Approx(100));
+  const PartCosts p = part_costs(cg.string());
+  CHECK(p.from_shares);
+  CHECK(p.total == Approx(500));
+  CHECK(p.gas == Approx(250));
+  CHECK(p.dem == Approx(100));
+  CHECK(p.coupling == Approx(100));
+
+  // gas, DEM, coupling s/s; speed-up 4000 / 500 = 8; DEM 1600 / 100 = 16 against the ideal
+  // 8000 / 1000 x 2 = 16; gas 2000 / 250 = 8 against 60000 / 60000 x 1.5 = 1.5; gas bounds it.
+  CHECK(speedup_columns(cg.string(), ref.string()) == "250,100,100,8,16,16,8,1.5,gas");
+  // Without a reference the speed-ups are blank; a case without timing has nothing.
+  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas");
+  CHECK(speedup_columns((root / "none").string(), ref.string()) == ",,,,,,,,");
+  fs::remove_all(root);
+}
