@@ -14,15 +14,17 @@ contact number Z of each size is in the table), then K timed steps of 1e-6 s.
 LBM: the coupled gas kernel (lbdem-bench-lbm --porous: TRT, Guo-Zhao porous form, per-cell force
 and velocity sums) on the periodic Taylor-Green box, K timed steps.
 
-Each size runs in a process of its own. Memory is the resident set right after the timed loop
-less that of the program before it built anything (/proc/self/status, core/memory.hpp), divided
-by the particles or interior cells; the peak (setup temporaries included) is in the CSV too. For
+Each size runs in a process of its own (a DEM bed is settled and cached by a process before the
+measured one). Memory is the resident set right after the timed loop less that of the program
+before it built anything (/proc/self/status, core/memory.hpp), divided by the particles or
+interior cells; the peak (set-up temporaries included, less the same base) is in the CSV too. For
 the LBM the table sets it beside what the solver's fields need: 19 x 8 B of populations (AA
 pattern, one lattice), 3 x 8 B of force, 2 x 8 B of porosity and drag, 3 x 8 B of velocity sums
 and a 1 B flag per stored cell, stored cells being (N + 2)^3 with the ghost layer. At small sizes
 the fixed cost of the process (OpenMP thread stacks, about 10 MB) dominates.
-Writes DIR/size.csv and DIR/size.png (default DIR: $TMPDIR/lbdem-bench/size-STAMP). Exit 0; 1 if
-a run failed; 2 on bad input.
+Writes DIR/size.csv (after every size) and DIR/size.png (default DIR:
+$TMPDIR/lbdem-bench/size-STAMP). Exit 0; 1 if a run failed (the others stay in the table); 2 on
+bad input.
 """
 import argparse
 import csv
@@ -59,18 +61,43 @@ def sizes(text, name, check):
     return vals
 
 
+class RunFailed(Exception):
+    pass
+
+
 def run(cmd):
     t0 = time.monotonic()
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
-        fail(f"'{' '.join(cmd)}' failed (exit {p.returncode}): {p.stderr.strip()[-400:]}", 1)
+        raise RunFailed(f"'{' '.join(cmd)}' failed (exit {p.returncode}): "
+                        f"{p.stderr.strip()[-400:]}")
     return p.stdout, time.monotonic() - t0
 
 
+FIELDS = ["part", "size", "unit", "threads", "throughput", "throughput_unit",
+          "contacts_per_particle", "bytes_per_unit", "expected_bytes_per_unit",
+          "measured_over_expected", "resident_bytes", "peak_bytes", "wall_s"]
+
+
+def save_csv(out, rows):
+    """size.csv as it stands (rewritten after every size: a later failure loses nothing)."""
+    tmp = os.path.join(out, "size.csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS)
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, os.path.join(out, "size.csv"))
+
+
 def memory(out):
-    m = {k: int(re.search(rf"\b{k}=(\d+)", out).group(1))
-         for k in ("rss_bytes", "base_rss_bytes", "peak_bytes")}
-    return m["rss_bytes"] - m["base_rss_bytes"], m["peak_bytes"]
+    """(resident bytes less the program's own before it built anything, peak likewise)."""
+    m = {}
+    for k in ("rss_bytes", "base_rss_bytes", "peak_bytes"):
+        hit = re.search(rf"\b{k}=(\d+)", out)
+        if not hit:
+            raise ValueError(f"no {k}= in: {out.strip()[-300:]}")
+        m[k] = int(hit.group(1))
+    return m["rss_bytes"] - m["base_rss_bytes"], m["peak_bytes"] - m["base_rss_bytes"]
 
 
 def main():
@@ -99,14 +126,26 @@ def main():
     os.makedirs(out, exist_ok=True)
     cache = os.path.join(out, "beds")
     rows = []
+    failed = []
     for n in dem_n:
-        text, wall = run([f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--threads",
-                          str(a.threads), "--settle", str(a.settle), "--steps", str(a.dem_steps),
-                          "--cache", cache])
+        cmd = [f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--threads", str(a.threads),
+               "--settle", str(a.settle), "--cache", cache]
+        try:
+            # Settle (and cache) the bed in a process of its own, so that the measured one holds
+            # only the timed solver: memory the allocator keeps after the settling run would
+            # otherwise count as the particles'.
+            run(cmd + ["--steps", "1"])
+            text, wall = run(cmd + ["--steps", str(a.dem_steps)])
+            used, peak = memory(text)
+        except (RunFailed, ValueError) as e:
+            print(f"DEM N={n}: {e}", file=sys.stderr)
+            failed.append(f"DEM N={n}")
+            continue
         m = re.search(r"Z=(\S+?)\s+\d+\s+(\S+)\s+particle-steps/s", text)
         if not m:
-            fail(f"unexpected output of lbdem-bench-dem: {text.strip()[-300:]}", 1)
-        used, peak = memory(text)
+            print(f"DEM N={n}: unexpected output: {text.strip()[-300:]}", file=sys.stderr)
+            failed.append(f"DEM N={n}")
+            continue
         rows.append({"part": "dem", "size": n, "unit": "particle", "threads": a.threads,
                      "throughput": float(m.group(2)), "throughput_unit": "particle-steps/s",
                      "contacts_per_particle": float(m.group(1)), "bytes_per_unit": used / n,
@@ -114,14 +153,22 @@ def main():
                      "resident_bytes": used, "peak_bytes": peak, "wall_s": round(wall, 1)})
         print(f"DEM N={n:>9,}: {float(m.group(2)):10.4g} particle-steps/s  Z={m.group(1)}  "
               f"{used / n:8.0f} B/particle  (peak {peak / 2**30:.2f} GiB)", flush=True)
+        save_csv(out, rows)
     for n in lbm_n:
-        text, wall = run([f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
-                          "--threads", str(a.threads), "--steps", str(a.lbm_steps),
-                          "--warmup", "2"])
+        try:
+            text, wall = run([f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
+                              "--threads", str(a.threads), "--steps", str(a.lbm_steps),
+                              "--warmup", "2"])
+            used, peak = memory(text)
+        except (RunFailed, ValueError) as e:
+            print(f"LBM {n}^3: {e}", file=sys.stderr)
+            failed.append(f"LBM {n}^3")
+            continue
         m = re.search(r"([\d.]+) MLUPS", text)
         if not m:
-            fail(f"unexpected output of lbdem-bench-lbm: {text.strip()[-300:]}", 1)
-        used, peak = memory(text)
+            print(f"LBM {n}^3: unexpected output: {text.strip()[-300:]}", file=sys.stderr)
+            failed.append(f"LBM {n}^3")
+            continue
         cells = n**3
         expected = LBM_FIELD_BYTES * (n + 2) ** 3 / cells
         rows.append({"part": "lbm", "size": cells, "unit": "cell", "threads": a.threads,
@@ -133,13 +180,10 @@ def main():
         print(f"LBM {n:>3}^3: {float(m.group(1)):8.1f} MLUPS  {used / cells:6.1f} B/cell "
               f"(fields {expected:.1f}: {used / cells / expected:.3f})  "
               f"(peak {peak / 2**30:.2f} GiB)", flush=True)
-
-    tmp = os.path.join(out, "size.csv.tmp")
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(tmp, os.path.join(out, "size.csv"))
+        save_csv(out, rows)
+    if not rows:
+        print(f"lbdem bench size: every run failed ({', '.join(failed)})", file=sys.stderr)
+        return 1
 
     fig, axes = plt.subplots(2, 2, figsize=(10, 7))
     for col, (part, label, scale, unit) in enumerate(
@@ -171,6 +215,10 @@ def main():
     fig.savefig(tmp, dpi=110, format="png")
     os.replace(tmp, os.path.join(out, "size.png"))
     print(f"size table: {out}/size.csv, plot: {out}/size.png")
+    if failed:
+        print(f"lbdem bench size: failed: {', '.join(failed)} (the others are in the table)",
+              file=sys.stderr)
+        return 1
     return 0
 
 

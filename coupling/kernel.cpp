@@ -304,7 +304,8 @@ void ParticleKernel::gather_sources(const std::vector<double>& qs,
   // planes run in parallel without races and without atomics.
   const Index per_plane = Index(bins_[0]) * bins_[1];
   for (int corner = 0; corner < 8; ++corner) {
-#pragma omp parallel for schedule(static) if (particle_count() >= kMinParallelParticles)
+    // Dynamic: a bed fills the lower bin planes only, which a static split would give one thread.
+#pragma omp parallel for schedule(dynamic, 1) if (particle_count() >= kMinParallelParticles)
     for (int b = 0; b < bins_[2]; ++b)
       for (Index k = bin_start_[std::size_t(b * per_plane)];
            k < bin_start_[std::size_t((b + 1) * per_plane)]; ++k) {

@@ -102,6 +102,21 @@ std::vector<std::pair<std::string, double>> read_phase_table(const std::string& 
 
 namespace {
 
+// study_phases.txt: "seconds<TAB>phase" per line; a malformed line is skipped.
+std::vector<std::pair<std::string, double>> read_phase_sums(const std::string& dir) {
+  std::vector<std::pair<std::string, double>> out;
+  std::ifstream in(dir + "/study_phases.txt");
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t tab = line.find('\t');
+    if (tab == std::string::npos) continue;
+    try {
+      out.emplace_back(line.substr(tab + 1), std::stod(line.substr(0, tab)));
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
+}
+
 // Groups of the phase timers (core/phase_timer.cpp names them "gas: ...", "DEM: ...",
 // "coupling: ...").
 void add_phase(PartCosts& p, const std::string& name, double seconds) {
@@ -122,29 +137,28 @@ PartCosts part_costs(const std::string& dir) {
   const auto [wall, simulated] = read_timing(dir);
   if (!(wall > 0 && simulated > 0)) return p;
   p.total = wall / simulated;
-  std::ifstream in(dir + "/study_phases.txt");
   double sum = 0;
-  for (std::string line; std::getline(in, line);) {
-    const std::size_t tab = line.find('\t');
-    if (tab == std::string::npos) continue;
-    const double sec = std::stod(line.substr(0, tab));
-    add_phase(p, line.substr(tab + 1), sec);
+  for (const auto& [name, sec] : read_phase_sums(dir)) {
+    add_phase(p, name, sec);
     sum += sec;
   }
+  // Summed phases: each part's own seconds per simulated second; the rest is everything else of
+  // the wall time (set-up, the banner, plots: outside the timed span).
+  double scale = 1.0 / simulated;
   if (!(sum > 0)) {
     // No sums kept: the last invocation's shares of the summed wall time.
     for (const auto& [name, sec] : read_phase_table(dir + "/log.txt")) {
       add_phase(p, name, sec);
       sum += sec;
     }
+    if (!(sum > 0)) return p;
     p.from_shares = true;
+    scale = p.total / sum;
   }
-  if (!(sum > 0)) return p;
-  const double scale = p.total / sum;
   p.gas *= scale;
   p.dem *= scale;
   p.coupling *= scale;
-  p.rest *= scale;
+  p.rest = p.total - p.gas - p.dem - p.coupling;
   p.split = true;
   return p;
 }
@@ -180,7 +194,7 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
   else
     out = ",,";
   const PartCosts r = ref_dir.empty() ? PartCosts{} : part_costs(ref_dir);
-  const std::string log = dir + "/log.txt", ref_log = ref_dir + "/log.txt";
+  const std::string log = dir + "/log.txt", ref_log = ref_dir.empty() ? "" : ref_dir + "/log.txt";
   auto ratio = [&](double a, double b) { return a > 0 && b > 0 ? num(a / b) : std::string(); };
   out += "," + ratio(r.total, p.total);
   const double n = parcels > 0 ? parcels : banner_number(log, "particles");
@@ -220,8 +234,16 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   if (fs::exists(dir + "/config.toml"))
     interval = Config::from_file(dir + "/config.toml").section("output").get("interval", 0.0);
   if (finished && (opt.end_time <= 0 || t_before >= opt.end_time - interval * (1 + 1e-9))) return 0;
+  // Where a resumed run starts: its checkpoint, not the last row of timeseries.csv (a run killed
+  // after its last checkpoint left rows beyond it, which the resumed run simulates again).
+  double t_start = t_before;
   if (resumable || finished) {
     ro.resume = dir;
+    try {
+      t_start = H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem");
+    } catch (const std::exception&) {
+      t_start = t_before;  // no checkpoint to read: run_scenario reports why
+    }
   } else {
     fs::remove_all(dir);
     ro.scenario = c.scenario;
@@ -242,9 +264,9 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   if (rc != 0 && rc != 130) return rc;
   const double t_after = last_time(dir + "/timeseries.csv");
   const auto [wall0, sim0] = read_timing(dir);
-  write_file_atomic(dir + "/study_timing.txt",
-                    full(wall0 + wall) + " " +
-                        full(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_before)) + "\n");
+  write_file_atomic(
+      dir + "/study_timing.txt",
+      full(wall0 + wall) + " " + full(sim0 + t_after - (ro.resume.empty() ? 0.0 : t_start)) + "\n");
   // Phase seconds summed over the invocations, kept only while every invocation left its table
   // (an earlier one without it, or a run killed before it wrote one, ends the sums: part_costs
   // then falls back on shares).
@@ -254,13 +276,9 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   if (!phases.empty() && (first || kept)) {
     std::map<std::string, double> sums;
     std::vector<std::string> order;
-    std::ifstream in(dir + "/study_phases.txt");
-    for (std::string line; std::getline(in, line);) {
-      const std::size_t tab = line.find('\t');
-      if (tab == std::string::npos) continue;
-      const std::string name = line.substr(tab + 1);
+    for (const auto& [name, sec] : read_phase_sums(dir)) {
       if (!sums.count(name)) order.push_back(name);
-      sums[name] += std::stod(line.substr(0, tab));
+      sums[name] += sec;
     }
     for (const auto& [name, sec] : phases) {
       if (!sums.count(name)) order.push_back(name);

@@ -284,8 +284,12 @@ int run_jet_mill_study(const StudyOptions& opt) {
     // The split against CG 1 of the same grid set (the parcels fed, not the banner's zero).
     const std::string ref = c->name.find("_fixed") != std::string::npos ? "cg1_fixed" : "cg1";
     const std::string ref_dir = root + "/" + ref;
+    // Only a reference that reached the window's end (a CG 1 still feeding would be compared on
+    // its lighter, earlier part).
+    const bool ref_present =
+        std::any_of(present.begin(), present.end(), [&](const Case* r) { return r->name == ref; });
     const double ref_parcels =
-        fs::exists(ref_dir + "/timeseries.csv")
+        ref_present
             ? last_and_max(ref_dir + "/timeseries.csv", "mass_removed_kg", "particles").second
             : 0.0;
     table << "," << speedup_columns(dir, ref_parcels > 0 ? ref_dir : "", parcels, ref_parcels)

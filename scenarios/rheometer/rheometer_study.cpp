@@ -193,9 +193,12 @@ int run_rheometer_study(const StudyOptions& opt) {
           << fmt(ts.peak) << "," << fmt(ts.steady) << "," << fmt(ts.steady_err) << ","
           << fmt(ts.fluctuation) << "," << ts.blocks << "," << fmt(simulated) << ","
           << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""));
-    // Speed-up against the original bed under the same contact law.
-    const std::string ref =
-        root + "/" + (c->rule.find("hertz") != std::string::npos ? "cg1_hertz" : "cg1");
+    // Speed-up against the original bed of the same geometry and contact law.
+    const std::string ref = root + "/" +
+                            (c->name.find("gap2") != std::string::npos    ? "cg1_gap2"
+                             : c->name.find("tall") != std::string::npos  ? "cg1_tall"
+                             : c->rule.find("hertz") != std::string::npos ? "cg1_hertz"
+                                                                          : "cg1");
     table << "," << speedup_columns(dir, fs::exists(ref + "/log.txt") ? ref : "") << "\n";
   }
   write_file_atomic(root + "/study.csv", table.str());
