@@ -223,6 +223,10 @@ void JetMillScenario::mill_banner(Log& log) const {
   log.derived(
       "nozzles", double(g.nozzles.size()), "",
       "(diameter " + to_text(q.diameter) + " m = " + to_text(q.diameter / f.dx) + " cells)");
+  if (q.supply_pressure > 0)
+    log.derived("nozzle supply pressure p0", q.supply_pressure, "Pa",
+                "(absolute; air through an ideal convergent nozzle, choked above 1.89 x ambient: "
+                "mdot and the momentum-conserving speed J / mdot below)");
   log.derived("jet exit speed U", q.speed, "m/s",
               "(lattice " + to_text(f.units().velocity_to_lattice(q.speed)) + ", Mach " +
                   to_text(f.units().velocity_to_lattice(q.speed) * std::sqrt(3.0)) + ")");

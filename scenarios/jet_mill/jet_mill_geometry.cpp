@@ -1,4 +1,5 @@
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
+#include "scenarios/jet_mill/nozzle_flow.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -94,9 +95,30 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
   if (d >= g.height)
     throw InputError(n.path("diameter"), to_text(d), "the nozzle is as tall as the chamber",
                      "give a diameter below the chamber height " + to_text(g.height) + " m");
-  const double u = n.require("speed", Range::positive("give the jet exit speed in m/s"));
-  const double mdot = n.get("mass_flow", f.density * u * kPi * d * d / 4,
-                            Range::positive("give the mass flow per nozzle in kg/s"));
+  // The jet: from the supply pressure (nozzle_flow.hpp: a choked nozzle's mass flow and the speed
+  // that carries its momentum flux), or given directly as exit speed and mass flow.
+  double u = 0, mdot = 0, p0 = 0;
+  if (n.has("supply_pressure")) {
+    for (const char* key : {"speed", "mass_flow"})
+      if (n.has(key))
+        throw InputError(n.path(key), "given with supply_pressure",
+                         "the supply pressure sets the jet's speed and mass flow",
+                         "give either supply_pressure or speed (and mass_flow), not both");
+    const double pa = n.get("ambient_pressure", 101325.0,
+                            Range::positive("give the chamber's absolute pressure in Pa"));
+    p0 = n.require("supply_pressure",
+                   Range{pa, Range::kInf, true, false,
+                         "give the absolute supply pressure in Pa, above ambient_pressure"});
+    const double t0 = n.get("supply_temperature", 293.15,
+                            Range::closed(150, 1000, "give the supply temperature in K"));
+    const NozzleFlow nf = nozzle_flow(p0, t0, pa, kPi * d * d / 4);
+    u = nf.speed;
+    mdot = nf.mass_flow;
+  } else {
+    u = n.require("speed", Range::positive("give the jet exit speed in m/s"));
+    mdot = n.get("mass_flow", f.density * u * kPi * d * d / 4,
+                 Range::positive("give the mass flow per nozzle in kg/s"));
+  }
   const double u_cap = f.max_speed;
   for (int k = 0; k < count; ++k) {
     const double th = (first + 360.0 * k / count) * kPi / 180.0;
@@ -108,6 +130,7 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
     q.diameter = d;
     q.speed = u;
     q.mass_flow = mdot;
+    q.supply_pressure = p0;
     q.source_radius =
         std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
     g.nozzles.push_back(q);

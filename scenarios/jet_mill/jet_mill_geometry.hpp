@@ -36,12 +36,13 @@ namespace lbdem::scenarios {
 struct FluidConfig;
 
 struct Nozzle {
-  Vec3 exit = Vec3::Zero();  // centre of the exit, on the chamber wall [m]
-  Vec3 dir = Vec3::UnitX();  // unit jet axis, into the chamber
-  double diameter = 0;       // [m]
-  double speed = 0;          // exit speed U [m/s]
-  double mass_flow = 0;      // mdot [kg/s]
-  double source_radius = 0;  // notional source radius r_s [m]
+  Vec3 exit = Vec3::Zero();    // centre of the exit, on the chamber wall [m]
+  Vec3 dir = Vec3::UnitX();    // unit jet axis, into the chamber
+  double diameter = 0;         // [m]
+  double speed = 0;            // exit speed U [m/s]
+  double mass_flow = 0;        // mdot [kg/s]
+  double supply_pressure = 0;  // p0 [Pa] when the jet comes from a supply pressure, else 0
+  double source_radius = 0;    // notional source radius r_s [m]
   double momentum_flux() const { return mass_flow * speed; }  // J [N]
 };
 
@@ -66,8 +67,10 @@ struct JetMillGeometry {
 /// box). Keys: outlet_radius [m]; [jet_mill.classifier] (optional): radius, thickness (at least
 /// sqrt(2) gas cells, default 1.5), height [m]; [jet_mill.nozzles]: count, angle_deg (to the wall
 /// tangent), first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter
-/// [m], speed [m/s], mass_flow [kg/s per nozzle; default rho U pi d^2 / 4]. The jets turn
-/// counter-clockwise seen from +z. Throws InputError naming the key.
+/// [m], and either speed [m/s] with mass_flow [kg/s per nozzle; default rho U pi d^2 / 4], or
+/// supply_pressure [Pa absolute] with supply_temperature [K, default 293.15] and
+/// ambient_pressure [Pa, default 101325] (nozzle_flow.hpp: air through an ideal convergent
+/// nozzle). The jets turn counter-clockwise seen from +z. Throws InputError naming the key.
 JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& fluid);
 
 /// The lattice side of the geometry: solid cells outside the chamber (body "chamber"), the outlet

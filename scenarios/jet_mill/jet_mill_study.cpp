@@ -31,10 +31,10 @@ struct Case {
 
 const std::vector<Case>& cases() {
   static const std::vector<Case> c = {
-      {"cg1", 1, true},          {"cg2", 2, true},        {"cg4", 4, true},
-      {"cg8", 8, true},          {"cg10", 10, true},      {"cg1_fixed", 1, false},
-      {"cg2_fixed", 2, false},   {"cg4_fixed", 4, false}, {"cg8_fixed", 8, false},
-      {"cg10_fixed", 10, false}, {"cg10_tc30", 10, false}};
+      {"cg1", 1, true},          {"cg2", 2, true},         {"cg4", 4, true},
+      {"cg8", 8, true},          {"cg10", 10, true},       {"cg1_fixed", 1, false},
+      {"cg2_fixed", 2, false},   {"cg4_fixed", 4, false},  {"cg8_fixed", 8, false},
+      {"cg10_fixed", 10, false}, {"cg10_tc30", 10, false}, {"cg10_p5bar", 10, false}};
   return c;
 }
 

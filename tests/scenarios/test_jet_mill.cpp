@@ -89,6 +89,34 @@ TEST_CASE("jet mill: the nozzles' sources hold mdot, J and the jets' torque on a
   }
 }
 
+TEST_CASE("jet mill: a supply pressure feeds the jets a choked nozzle's mass flow and thrust",
+          "[scenarios][jet_mill]") {
+  // 5 bar absolute through the 0.8 mm nozzles: 0.0404 A p0 / sqrt(T0) = 0.593 g/s each, and
+  // J = mdot u* + A (p* - p_a) = 1.2679 A p0 - A p_a = 0.268 N (nozzle_flow.hpp; hand values,
+  // tests/scenarios/test_nozzle_flow.cpp checks the formulas). The sources must carry exactly that
+  // into the gas; the lattice is set for 300 m/s so that the notional source fits the chamber.
+  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string cfg = text.str();
+  cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = 1e-3");
+  cfg.replace(cfg.find("max_speed = 120.0"), 17, "max_speed = 300.0");
+  cfg.replace(cfg.find("speed = 120.0 "), 14, "supply_pressure = 5e5 ");
+  lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
+  const auto& f = mill.box().fluid();
+  const auto src = lbdem::scenarios::jet_sources(*mill.box().gas(), f, mill.geometry());
+  double mass = 0;
+  for (const auto& m : src.mass) mass += m.mass;
+  const double cell = f.dx * f.dx * f.dx, to_si = cell / f.units().force_density_to_lattice(1.0);
+  double abs_force = 0;
+  for (const auto& fc : src.force) abs_force += to_si * fc.norm();
+  const double area = lbdem::kPi * 4e-4 * 4e-4, mdot = 0.040418 * area * 5e5 / std::sqrt(293.15);
+  // 0.040418: the choked constant to five digits; 1e-4 covers it.
+  CHECK(mass * kRho * cell / f.dt == Approx(4 * mdot).epsilon(1e-4));
+  CHECK(abs_force == Approx(4 * (1.26790 * area * 5e5 - area * 101325)).epsilon(1e-4));
+  CHECK(mill.geometry().nozzles.front().supply_pressure == 5e5);
+}
+
 TEST_CASE("jet mill: the jets spin the gas up at their torque 4 J R cos(40 deg) on two grids",
           "[scenarios][jet_mill][physics]") {
   // Measured on the gas itself: its angular momentum about the axis over the first 0.2 ms, before
@@ -209,6 +237,8 @@ TEST_CASE("jet mill: bad input stops with one line naming the key", "[scenarios]
       {"jet_mill.outlet_radius=0.03", "jet_mill.outlet_radius"},
       {"'fluid.faces.z_lo={kind=\"inlet\",velocity=[0.0,0.0,1.0]}'", "fluid.faces.z_lo"},
       {"coupling.drag=\"gidaspow\"", "coupling"},
+      // The preset gives speed: a supply pressure besides it is refused, naming speed.
+      {"jet_mill.nozzles.supply_pressure=5e5", "jet_mill.nozzles.speed"},
   };
   for (const Case& c : cases) {
     const std::string out = tmpdir("jet_mill_bad");
