@@ -5,6 +5,7 @@
 #include "core/types.hpp"
 #include "lbm/d3q19.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace lbdem::lbm {
@@ -19,7 +20,23 @@ class Grid {
         periodic_(periodic),
         lead_(aligned_rows ? 8 : 1),
         sx_(aligned_rows ? 8 + (nx + 1 + 7) / 8 * 8 : nx + 2),
-        sy_(ny + 2) {}
+        sy_(ny + 2) {
+    // The offsets of a cell's 19 neighbours depend only on whether it is the first, an inner or
+    // the last cell along each axis (only the first and last wrap on a periodic axis): 27 kinds,
+    // tabulated once, since the AA kernel asks for them on every x range of every row.
+    for (int kz = 0; kz < 3; ++kz)
+      for (int ky = 0; ky < 3; ++ky)
+        for (int kx = 0; kx < 3; ++kx) {
+          const int at[3] = {kx, ky, kz};
+          int pos[3];
+          for (int a = 0; a < 3; ++a)
+            pos[a] = at[a] == 0 ? 0 : at[a] == 1 ? std::min(1, n_[a] - 1) : n_[a] - 1;
+          const Index n = index(pos[0], pos[1], pos[2]);
+          auto& off = offsets_[std::size_t(kx + 3 * (ky + 3 * kz))];
+          for (int q = 0; q < kQ; ++q)
+            off[std::size_t(q)] = neighbor(pos[0], pos[1], pos[2], q) - n;
+        }
+  }
 
   int nx() const { return n_[0]; }
   int ny() const { return n_[1]; }
@@ -54,11 +71,8 @@ class Grid {
     return index(shift(0, x, kCx[q]), shift(1, y, kCy[q]), shift(2, z, kCz[q]));
   }
   /// neighbor(x, y, z, q) - index(x, y, z) for all q.
-  std::array<Index, kQ> neighbor_offsets(int x, int y, int z) const {
-    std::array<Index, kQ> off{};
-    const Index n = index(x, y, z);
-    for (int q = 0; q < kQ; ++q) off[q] = neighbor(x, y, z, q) - n;
-    return off;
+  const std::array<Index, kQ>& neighbor_offsets(int x, int y, int z) const {
+    return offsets_[std::size_t(kind(0, x) + 3 * (kind(1, y) + 3 * kind(2, z)))];
   }
 
  private:
@@ -66,6 +80,10 @@ class Grid {
   std::array<bool, 3> periodic_;
   Index lead_;  // position of x = 0 in a row (the ghost x = -1 sits just before it)
   Index sx_, sy_;
+  // 0: the first cell along the axis, 2: the last, 1: any other (an extent of 1 is kind 0, of 2
+  // kinds 0 and 2, so every kind tabulated stands for the positions it is used for).
+  int kind(int axis, int i) const { return i == 0 ? 0 : (i == n_[axis] - 1 ? 2 : 1); }
+  std::array<std::array<Index, kQ>, 27> offsets_{};
 };
 
 /// Calls body(y, z) for every interior row, rows split statically over the OpenMP threads
