@@ -7,10 +7,12 @@ usage: ./lbdem bench size [--dem-n 10000,...] [--lbm-n 32,...] [--threads T] [--
        (called as /usr/bin/python3 bench/size.py BUILD_DIR [options]; --dem-n '' or --lbm-n ''
        leaves that part out)
 
-DEM: the Hertz-Mindlin bed of ../shared/bench (lbdem-bench-dem; 50 x 50 particles per layer, so
-N = 10^6 is a column 400 layers high), settled for S steps of 1e-5 s (default 5,000: the bed of
-the peer comparison settles 20,000, which at 10^6 particles would take an hour on one core; the
-contact number Z of each size is in the table), then K timed steps of 1e-6 s.
+DEM: the Hertz-Mindlin bed of ../shared/bench (lbdem-bench-dem), 8 layers deep like its N = 20,000
+case, with the footprint grown to the size asked (side S = round(sqrt(N / 8)), N = 8 S^2: a bed of
+the same depth, so every size has about the same contacts per particle; a 50 x 50 footprint made
+N = 10^6 a column 400 layers high, still falling after the settling steps, Z = 0.7), settled for
+S steps of 1e-5 s (default 3,000: the 8 layers close their 50 um gaps in 9 ms; the contact number
+Z of each size is in the table), then K timed steps of 1e-6 s.
 LBM: the coupled gas kernel (lbdem-bench-lbm --porous: TRT, Guo-Zhao porous form, per-cell force
 and velocity sums) on the periodic Taylor-Green box, K timed steps.
 
@@ -106,13 +108,13 @@ def main():
     ap.add_argument("--dem-n", default="10000,30000,100000,300000,1000000")
     ap.add_argument("--lbm-n", default="32,64,128,256")
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--settle", type=int, default=5000)
+    ap.add_argument("--settle", type=int, default=3000)
     ap.add_argument("--dem-steps", type=int, default=500)
     ap.add_argument("--lbm-steps", type=int, default=20)
     ap.add_argument("--out")
     a = ap.parse_args()
-    dem_n = sizes(a.dem_n, "--dem-n", lambda v: None if v > 0 and v % 2500 == 0 else
-                  "the bed has 2,500 particles per layer: give a positive multiple of 2500")
+    dem_n = sizes(a.dem_n, "--dem-n", lambda v: None if 32 <= v <= 10**8 else
+                  "give a particle count from 32 to 1e8 (it is rounded to 8 layers of S x S)")
     lbm_n = sizes(a.lbm_n, "--lbm-n", lambda v: None if 8 <= v <= 512 else
                   "give a cube edge from 8 to 512 cells")
     for name, v in (("--threads", a.threads), ("--settle", a.settle),
@@ -127,9 +129,11 @@ def main():
     cache = os.path.join(out, "beds")
     rows = []
     failed = []
-    for n in dem_n:
-        cmd = [f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--threads", str(a.threads),
-               "--settle", str(a.settle), "--cache", cache]
+    for asked in dem_n:
+        side = max(2, round((asked / 8) ** 0.5))
+        n = 8 * side * side
+        cmd = [f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--side", str(side),
+               "--threads", str(a.threads), "--settle", str(a.settle), "--cache", cache]
         try:
             # Settle (and cache) the bed in a process of its own, so that the measured one holds
             # only the timed solver: memory the allocator keeps after the settling run would
