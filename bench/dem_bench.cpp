@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   std::string cache = (std::filesystem::temp_directory_path() / "lbdem-bench").string();
   app.add_option("--n", n, "particles: side^2 x layers (20000 or 100000 at side 50)");
   app.add_option("--side", side, "sites per footprint edge (50: the peers' case)")
-      ->check(CLI::Range(2, 100000));
+      ->check(CLI::Range(2, 46340));  // side^2 fits an int
   app.add_option("--steps", steps, "timed steps (default 5000 for N <= 20000, else 1000)");
   app.add_option("--settle", settle, "settling steps of 1e-5 s");
   app.add_option("--threads", threads, "thread counts");

@@ -33,7 +33,7 @@ inline void read_pointers(const PdfField& pdf, AaState s, int x0, int y, int z,
     for (int q = 0; q < kQ; ++q) in[q] = pdf.dir(q) + n0;
   } else {
     // x - c_q = x + c_qbar.
-    const auto off = g.neighbor_offsets(x0, y, z);
+    const auto& off = g.neighbor_offsets(x0, y, z);
     for (int q = 0; q < kQ; ++q) in[q] = pdf.dir(opposite(q)) + n0 + off[opposite(q)];
   }
 }
@@ -46,7 +46,7 @@ inline void write_pointers(PdfField& pdf, AaState s, int x0, int y, int z, doubl
   if (s == AaState::natural) {
     for (int q = 0; q < kQ; ++q) out[q] = pdf.dir(opposite(q)) + n0;
   } else {
-    const auto off = g.neighbor_offsets(x0, y, z);
+    const auto& off = g.neighbor_offsets(x0, y, z);
     for (int q = 0; q < kQ; ++q) out[q] = pdf.dir(q) + n0 + off[q];
   }
 }

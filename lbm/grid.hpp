@@ -71,6 +71,7 @@ class Grid {
     return index(shift(0, x, kCx[q]), shift(1, y, kCy[q]), shift(2, z, kCz[q]));
   }
   /// neighbor(x, y, z, q) - index(x, y, z) for all q.
+  /// For interior cells only (a ghost coordinate would read an inner cell's offsets).
   const std::array<Index, kQ>& neighbor_offsets(int x, int y, int z) const {
     return offsets_[std::size_t(kind(0, x) + 3 * (kind(1, y) + 3 * kind(2, z)))];
   }

@@ -98,6 +98,13 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
   // The jet: from the supply pressure (nozzle_flow.hpp: a choked nozzle's mass flow and the speed
   // that carries its momentum flux), or given directly as exit speed and mass flow.
   double u = 0, mdot = 0, p0 = 0;
+  if (!n.has("supply_pressure"))
+    for (const char* key : {"ambient_pressure", "supply_temperature"})
+      if (n.has(key))
+        throw InputError(n.path(key), "", "it belongs to a nozzle fed from a supply pressure",
+                         "give jet_mill.nozzles.supply_pressure (in place of speed and "
+                         "mass_flow), or remove " +
+                             std::string(key));
   if (n.has("supply_pressure")) {
     for (const char* key : {"speed", "mass_flow"})
       if (n.has(key))

@@ -6,16 +6,18 @@
 // Jet model (notional nozzle with mass and momentum sources). Real grinding nozzles are choked and
 // their jets under-expanded and supersonic; a weakly compressible LBM holds lattice speeds of about
 // 0.1 only. Each jet is therefore given by what drives the mill, its mass flow mdot and momentum
-// flux J = mdot U (U: the exit speed of the preset, the fully expanded speed of a real nozzle), and
-// both enter the gas exactly, whatever the grid:
+// flux J = mdot U (U: the exit speed of the preset or, from a supply pressure, the speed J / mdot
+// that carries a real nozzle's thrust: nozzle_flow.hpp), and both enter the gas exactly, whatever
+// the grid:
 //   - mass: mdot dt per gas step, as resting gas (lbm::LbmSolver::set_mass_sources),
 //   - momentum: a force density whose integral is J (the lattice's Guo forcing),
 // spread over a notional source, a cylinder on the nozzle axis from the exit at the wall, of radius
 //   r_s = max(d/2, sqrt(J / (pi rho U_cap^2)))
 // and length 2 r_s, U_cap the gas speed the time step was set for (fluid.max_speed): a jet with the
-// same momentum flux at the speed the lattice can carry (the pseudo-diameter idea of Birch et al.
-// 1984, Combust. Sci. Technol. 36, 249, and Ewan & Moodie 1986, ibid. 45, 275, who conserve mass
-// and momentum of an under-expanded jet across its shock cells). Beyond a few diameters a turbulent
+// same momentum flux at the speed the lattice can carry (the pseudo-diameter idea: Birch et al.
+// 1984, Combust. Sci. Technol. 36, 249, and Ewan & Moodie 1986, ibid. 45, 275, conserve the mass of
+// an under-expanded jet across its shock cells; Birch, Hughes & Swaffield 1987, ibid. 52, 161, its
+// mass and momentum, as here). Beyond a few diameters a turbulent
 // jet depends on J alone (momentum-conserving self-similar jet: Pope, Turbulent Flows, §5.1), and
 // the mill's vortex on the jets' angular momentum J R cos(angle) and on mdot (its radial outflow).
 // Limits: the jet's core (a few nozzle diameters) is wider and slower than the real one, so

@@ -21,12 +21,12 @@ TEST_CASE("Nozzle flow: a choked air nozzle passes 0.0404 A p0 / sqrt(T0) and it
   for (double p0 : {3e5, 5e5, 8e5}) {
     const auto f = nozzle_flow(p0, kT0, kPa, kArea);
     CHECK(f.choked);
-    // The textbook constant is given to three digits (0.04042 from the formula): 0.1 %.
+    // The textbook constant is given to three digits (0.040415 from the formula): 0.1 %.
     CHECK(f.mass_flow / (kArea * p0 / std::sqrt(kT0)) == Approx(0.0404).epsilon(1e-3));
     // J + A p_a is the vacuum thrust, C_F A p0 with C_F = 1.2679 for gamma = 1.4 (four digits).
     CHECK((f.momentum_flux() + kArea * kPa) / (kArea * p0) == Approx(1.2679).epsilon(1e-4));
   }
-  // 5 bar absolute: 0.59 g/s at 452 m/s, J = 0.268 N (README, the jet mill's nozzle conditions).
+  // 5 bar absolute: 0.593 g/s at J / mdot = 451 m/s, J = 0.268 N (README, the jet mill's nozzles).
   const auto f = nozzle_flow(5e5, kT0, kPa, kArea);
   CHECK(f.mass_flow == Approx(5.93e-4).epsilon(2e-3));
   CHECK(f.momentum_flux() == Approx(0.268).epsilon(2e-3));
@@ -39,8 +39,8 @@ TEST_CASE("Nozzle flow: a small pressure difference gives Bernoulli's speed and 
   CHECK_FALSE(f.choked);
   const double rho0 = p0 / (287.05 * kT0), u = std::sqrt(2 * dp / rho0);
   // Compressibility corrects U^2 by (1 + (1 - k) x / 2), k = (gamma - 1) / gamma, x = dp / p0:
-  // +0.18 % in U at dp/p0 = 0.01; the exit density is rho0 (1 - x / gamma): -0.7 % in mdot.
-  // 0.5 % and 1 % hold those and catch a factor or a sign.
+  // +0.18 % in U at dp/p0 = 0.01; the exit density is rho0 (1 - x / gamma), -0.7 %, so mdot is
+  // -0.52 % net. 0.5 % and 1 % hold those and catch a factor or a sign.
   CHECK(f.speed == Approx(u).epsilon(5e-3));
   CHECK(f.mass_flow == Approx(rho0 * kArea * u).epsilon(1e-2));
 }
