@@ -76,6 +76,25 @@ def run(cmd):
     return p.stdout, time.monotonic() - t0
 
 
+def measure(label, cmds, pattern, failed):
+    """Runs cmds in turn; from the last one's output (text, wall s, resident and peak bytes, the
+    match of pattern), or None with the reason on stderr and label added to failed."""
+    try:
+        for cmd in cmds:
+            text, wall = run(cmd)
+        used, peak = memory(text)
+    except (RunFailed, ValueError) as e:
+        print(f"{label}: {e}", file=sys.stderr)
+        failed.append(label)
+        return None
+    m = re.search(pattern, text)
+    if not m:
+        print(f"{label}: unexpected output: {text.strip()[-300:]}", file=sys.stderr)
+        failed.append(label)
+        return None
+    return text, wall, used, peak, m
+
+
 FIELDS = ["part", "size", "unit", "threads", "throughput", "throughput_unit",
           "contacts_per_particle", "bytes_per_unit", "expected_bytes_per_unit",
           "measured_over_expected", "resident_bytes", "peak_bytes", "wall_s"]
@@ -134,22 +153,14 @@ def main():
         n = 8 * side * side
         cmd = [f"{a.build}/bin/lbdem-bench-dem", "--n", str(n), "--side", str(side),
                "--threads", str(a.threads), "--settle", str(a.settle), "--cache", cache]
-        try:
-            # Settle (and cache) the bed in a process of its own, so that the measured one holds
-            # only the timed solver: memory the allocator keeps after the settling run would
-            # otherwise count as the particles'.
-            run(cmd + ["--steps", "1"])
-            text, wall = run(cmd + ["--steps", str(a.dem_steps)])
-            used, peak = memory(text)
-        except (RunFailed, ValueError) as e:
-            print(f"DEM N={n}: {e}", file=sys.stderr)
-            failed.append(f"DEM N={n}")
+        # Settle (and cache) the bed in a process of its own, so that the measured one holds only
+        # the timed solver: memory the allocator keeps after the settling run would otherwise
+        # count as the particles'.
+        got = measure(f"DEM N={n}", [cmd + ["--steps", "1"], cmd + ["--steps", str(a.dem_steps)]],
+                      r"Z=(\S+?)\s+\d+\s+(\S+)\s+particle-steps/s", failed)
+        if not got:
             continue
-        m = re.search(r"Z=(\S+?)\s+\d+\s+(\S+)\s+particle-steps/s", text)
-        if not m:
-            print(f"DEM N={n}: unexpected output: {text.strip()[-300:]}", file=sys.stderr)
-            failed.append(f"DEM N={n}")
-            continue
+        text, wall, used, peak, m = got
         rows.append({"part": "dem", "size": n, "unit": "particle", "threads": a.threads,
                      "throughput": float(m.group(2)), "throughput_unit": "particle-steps/s",
                      "contacts_per_particle": float(m.group(1)), "bytes_per_unit": used / n,
@@ -159,20 +170,12 @@ def main():
               f"{used / n:8.0f} B/particle  (peak {peak / 2**30:.2f} GiB)", flush=True)
         save_csv(out, rows)
     for n in lbm_n:
-        try:
-            text, wall = run([f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
-                              "--threads", str(a.threads), "--steps", str(a.lbm_steps),
-                              "--warmup", "2"])
-            used, peak = memory(text)
-        except (RunFailed, ValueError) as e:
-            print(f"LBM {n}^3: {e}", file=sys.stderr)
-            failed.append(f"LBM {n}^3")
+        got = measure(f"LBM {n}^3", [[f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
+                                      "--threads", str(a.threads), "--steps", str(a.lbm_steps),
+                                      "--warmup", "2"]], r"([\d.]+) MLUPS", failed)
+        if not got:
             continue
-        m = re.search(r"([\d.]+) MLUPS", text)
-        if not m:
-            print(f"LBM {n}^3: unexpected output: {text.strip()[-300:]}", file=sys.stderr)
-            failed.append(f"LBM {n}^3")
-            continue
+        text, wall, used, peak, m = got
         cells = n**3
         expected = LBM_FIELD_BYTES * (n + 2) ** 3 / cells
         rows.append({"part": "lbm", "size": cells, "unit": "cell", "threads": a.threads,
