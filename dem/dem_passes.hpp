@@ -81,6 +81,20 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   g.n = d / dist;
   g.delta = rs - dist;
   g.r_star = ri * rj / rs;
+  const std::uint32_t slot = pl.jslot[k];
+  if (g.delta <= 0) {
+    // Apart (cohesion only, or the step a contact ends): no tangential force, so no torque; the
+    // torque sums would only add zeros. Skips the eight velocity loads and the kinematics
+    // (book() reads v_rel only at the start of a touch).
+    g.v_rel = Vec3::Zero();
+    const ContactForce c =
+        Law::evaluate_apart(tab.particle(p.material[i], p.material[j]), g, pl.history[k]);
+    pl.j_force[slot] = -c.force;
+    pl.j_torque[slot] = Vec3::Zero();
+    book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
+    if (pl.state[k] & kInteracting) f_i += c.force;
+    return;
+  }
   g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
   g.i_star = 0;  // read only by the constant-torque rolling model
   if constexpr (Law::Rolling::active)
@@ -99,7 +113,6 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   const ContactForce c =
       Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
   const Vec3 tc = g.n.cross(c.ft);
-  const std::uint32_t slot = pl.jslot[k];
   pl.j_force[slot] = -c.force;
   pl.j_torque[slot] = aj * tc - c.m_roll;
   book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);

@@ -33,6 +33,24 @@ struct ContactLaw {
     return 0.0;
   }
 
+  /// Force on i from j apart (delta <= 0): cohesion only, and the springs released. It reads only
+  /// g.n, g.delta and g.r_star, so a caller may leave the kinematics unset (about half the listed
+  /// pairs of a cohesive bed are in this state, measured on the Bo 10 original: 149,500 of 303,221
+  /// interacting pairs).
+  static ContactForce evaluate_apart(const Params& p, const ContactGeometry& g, ContactHistory& h) {
+    ContactForce out;
+    double f_coh = 0;
+    if constexpr (Cohesion::active) {
+      const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
+      f_coh = c.f;
+      out.u_elastic = c.u;
+    }
+    out.e_stiffness = -0.5 * h.kt * h.xi.squaredNorm() - 0.5 * h.kr * h.theta.squaredNorm();
+    h = ContactHistory{};
+    out.force = f_coh * g.n;
+    return out;
+  }
+
   /// Force on i from j (or a wall) for the geometry g; updates the history.
   ///
   /// Tangential spring (Cundall & Strack 1979; Luding 2008): xi is kept in the tangent plane by
@@ -50,18 +68,13 @@ struct ContactLaw {
   /// (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's energy leaves the same way.
   static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h,
                                double dt) {
+    if (g.delta <= 0) return evaluate_apart(p, g, h);
     ContactForce out;
     double f_coh = 0;
     if constexpr (Cohesion::active) {
       const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
       f_coh = c.f;
       out.u_elastic = c.u;
-    }
-    if (g.delta <= 0) {
-      out.e_stiffness = -0.5 * h.kt * h.xi.squaredNorm() - 0.5 * h.kr * h.theta.squaredNorm();
-      h = ContactHistory{};
-      out.force = f_coh * g.n;
-      return out;
     }
     const auto s = Normal::elastic(p.normal, g.delta, g.r_star);
     const double vn = g.v_rel.dot(g.n);
