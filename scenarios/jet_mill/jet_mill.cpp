@@ -36,6 +36,7 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   if (particles) add_chamber_walls(cfg);
   lbm::LbmSolver& gas = *box_.gas();
   outlet_ = build_chamber(gas, f, geometry_);
+  if (particles && geometry_.meshed()) check_feed_in_gas(cfg);
   sources_ = jet_sources(gas, f, geometry_);
   gas.set_mass_sources(sources_.mass);
   gas.enable_force_field();
@@ -85,9 +86,10 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
   const Config inflow = cfg.section("inflow");
   const Vec3 lo = inflow.require_vec3("lo"), hi = inflow.require_vec3("hi");
   const JetMillGeometry& g = geometry_;
+  // (An STL chamber is checked on the gas's cells once they exist: check_feed_in_gas.)
   for (const Vec3& c : {lo, hi, Vec3(lo.x(), hi.y(), lo.z()), Vec3(hi.x(), lo.y(), hi.z())})
-    if (std::hypot(c.x() - g.axis.x(), c.y() - g.axis.y()) > g.radius || c.z() < g.axis.z() ||
-        c.z() > g.axis.z() + g.height)
+    if ((!g.meshed() && std::hypot(c.x() - g.axis.x(), c.y() - g.axis.y()) > g.radius) ||
+        c.z() < g.axis.z() || c.z() > g.axis.z() + g.height)
       throw InputError(inflow.path(c == hi ? "hi" : "lo"),
                        to_text(c.x()) + ", " + to_text(c.y()) + ", " + to_text(c.z()),
                        "a corner of the feed region lies outside the chamber",
@@ -119,11 +121,24 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
   dem::Wall side;
   side.name = "chamber";
   side.material = material;
-  dem::CylinderWall c;
-  c.origin = g.axis;
-  c.radius = g.radius;
-  c.inside = true;
-  side.shape = c;
+  if (g.meshed()) {
+    // The same facets the gas's cells came from, less those in the plates' planes (the floor is
+    // the box's face and the roof the plane with the outlet's hole below: two walls in one plane
+    // would double the force). Vertices merged as the STL reader merges them.
+    const std::vector<Triangle> facets = g.side_facets();
+    Vec3 lo_v = facets.front()[0], hi_v = lo_v;
+    for (const Triangle& t : facets)
+      for (const Vec3& v : t) lo_v = lo_v.cwiseMin(v), hi_v = hi_v.cwiseMax(v);
+    dem::MeshWall m;
+    m.mesh = dem::TriangleMesh::from_triangles(facets, 1e-9 * (hi_v - lo_v).norm());
+    side.shape = std::move(m);
+  } else {
+    dem::CylinderWall c;
+    c.origin = g.axis;
+    c.radius = g.radius;
+    c.inside = true;
+    side.shape = c;
+  }
   side.torque_origin = g.axis;
   box_.add_wall(std::move(side));
   dem::Wall top;
@@ -152,6 +167,29 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
     ring.torque_origin = g.axis;
     box_.add_wall(std::move(ring));
   }
+}
+
+void JetMillScenario::check_feed_in_gas(const Config& cfg) const {
+  // Every gas cell whose centre lies in the feed region must be gas: the STL's wall may run
+  // anywhere inside the box. (A region narrower than a cell between centres passes unchecked;
+  // the insertion keeps spheres inside the region, and the walls hold them.)
+  const Config inflow = cfg.section("inflow");
+  const Vec3 lo = inflow.require_vec3("lo"), hi = inflow.require_vec3("hi");
+  const FluidConfig& f = box_.fluid();
+  const lbm::LbmSolver& gas = *box_.gas();
+  const lbm::Grid& grid = gas.grid();
+  for (int z = 0; z < grid.nz(); ++z)
+    for (int y = 0; y < grid.ny(); ++y)
+      for (int x = 0; x < grid.nx(); ++x) {
+        const Vec3 c = f.cell_centre(x, y, z);
+        if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
+        if (!gas.flags().fluid(grid.index(x, y, z)))
+          throw InputError(
+              inflow.path("lo"), to_text(lo.x()) + ", " + to_text(lo.y()) + ", " + to_text(lo.z()),
+              "the feed region reaches the solid of the chamber's STL (at " + to_text(c.x()) +
+                  ", " + to_text(c.y()) + ", " + to_text(c.z()) + " m)",
+              "keep inflow.lo - inflow.hi inside the chamber");
+      }
 }
 
 double JetMillScenario::outlet_mass_flow() const {
@@ -213,6 +251,14 @@ void JetMillScenario::mill_banner(Log& log) const {
   log.derived("chamber height", g.height, "m", "(" + to_text(g.height / f.dx) + " cells)");
   log.derived("outlet (vortex finder) radius", g.outlet_radius, "m",
               "(" + to_text(g.outlet_radius / f.dx) + " cells)");
+  if (g.meshed())
+    log.derived(
+        "chamber from STL", double(g.chamber_mesh.size()), "facets",
+        "(" + std::to_string(g.side_facets().size()) +
+            " side facets are the particles' wall; nozzles on the nominal radius, source "
+            "gas fraction " +
+            to_text(*std::min_element(sources_.gas_fraction.begin(), sources_.gas_fraction.end())) +
+            " at least)");
   if (g.classifier_height > 0)
     log.derived("classifier ring radius", g.classifier_radius, "m",
                 "(wall " + to_text(g.classifier_thickness / f.dx) + " cells thick, reaching " +

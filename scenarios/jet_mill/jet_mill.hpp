@@ -43,6 +43,7 @@ class JetMillScenario : public Scenario {
   /// The DEM's chamber: cylinder and top plate with the vortex finder's hole (the floor is the
   /// box's z_lo face); checks the box's faces and the feed region against it.
   void add_chamber_walls(const Config& cfg);
+  void check_feed_in_gas(const Config& cfg) const;
 
   BoxScenario box_;
   JetMillGeometry geometry_;

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "lbm/geometry/cylinder.hpp"
 #include "lbm/geometry/lattice_frame.hpp"
+#include "lbm/geometry/mesh_voxelizer.hpp"
 #include "scenarios/common/fluid_config.hpp"
 
 namespace lbdem::scenarios {
@@ -34,6 +35,20 @@ bool JetMillGeometry::in_classifier(const Vec3& x) const {
          x.z() >= axis.z() + height - classifier_height;
 }
 
+std::vector<Triangle> JetMillGeometry::side_facets() const {
+  const double tol = 1e-6 * height, z0 = axis.z(), z1 = axis.z() + height;
+  std::vector<Triangle> side;
+  for (const Triangle& t : chamber_mesh) {
+    bool floor = true, roof = true;
+    for (const Vec3& v : t) {
+      floor = floor && std::abs(v.z() - z0) <= tol;
+      roof = roof && std::abs(v.z() - z1) <= tol;
+    }
+    if (!floor && !roof) side.push_back(t);
+  }
+  return side;
+}
+
 bool JetMillGeometry::inside(const Vec3& x) const {
   const double dx = x.x() - axis.x(), dy = x.y() - axis.y();
   return dx * dx + dy * dy <= radius * radius && !in_classifier(x);
@@ -54,6 +69,36 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                                 Range::closed(f.dx, 0.9 * g.radius,
                                               "give the vortex finder's radius in m, at least "
                                               "one cell and below the chamber radius"));
+  if (section.has("chamber_stl")) {
+    // A user's chamber: any closed surface inside the box (the box stays the bounding box that
+    // sets the nominal radius, the plates and the outlet's plane).
+    g.chamber_key = section.path("chamber_stl");
+    const std::string file = section.get_string("chamber_stl", "");
+    const double scale = section.get("chamber_stl_scale", 1.0,
+                                     Range::positive("give the factor to metres, e.g. 1e-3 for a "
+                                                     "file in mm"));
+    g.chamber_mesh = read_stl(file, scale, g.chamber_key);
+    const double tol = 1e-6 * g.height;
+    for (const Triangle& t : g.chamber_mesh)
+      for (const Vec3& v : t)
+        for (int a = 0; a < 3; ++a)
+          if (v[a] < f.lo[a] - tol || v[a] > hi[a] + tol)
+            throw InputError(g.chamber_key, file,
+                             "a corner (" + to_text(v.x()) + ", " + to_text(v.y()) + ", " +
+                                 to_text(v.z()) + " m) lies outside the box " + to_text(f.lo.x()) +
+                                 " - " + to_text(hi.x()) + ", " + to_text(f.lo.y()) + " - " +
+                                 to_text(hi.y()) + ", " + to_text(f.lo.z()) + " - " +
+                                 to_text(hi.z()) + " m",
+                             "give box.lo and box.hi that hold the chamber (and check "
+                             "jet_mill.chamber_stl_scale: 1e-3 for a file in mm)");
+    if (g.side_facets().empty())
+      throw InputError(g.chamber_key, file, "every facet lies in the floor's or the roof's plane",
+                       "give a closed surface around the chamber's gas, its side included");
+  } else if (section.has("chamber_stl_scale")) {
+    throw InputError(section.path("chamber_stl_scale"), "",
+                     "it scales jet_mill.chamber_stl, which is not given",
+                     "give jet_mill.chamber_stl or remove chamber_stl_scale");
+  }
   if (section.has("classifier")) {
     // A ring between the outlet and the grinding zone. At least sqrt(2) cells thick: the longest
     // D3Q19 link is sqrt(2) dx and the radius changes along it by at most its length, so no link
@@ -183,10 +228,14 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
 int build_chamber(lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeometry& g) {
   const lbm::LatticeFrame frame{f.lo, f.dx};
   const int chamber = gas.add_body("chamber");
-  lbm::Cylinder wall;
-  wall.axis_point = g.axis;
-  wall.radius = g.radius;
-  lbm::mark_cylinder(gas, frame, wall, lbm::SolidSide::outside, chamber);
+  if (g.meshed()) {
+    lbm::mark_mesh(gas, frame, g.chamber_mesh, lbm::SolidSide::outside, chamber, g.chamber_key);
+  } else {
+    lbm::Cylinder wall;
+    wall.axis_point = g.axis;
+    wall.radius = g.radius;
+    lbm::mark_cylinder(gas, frame, wall, lbm::SolidSide::outside, chamber);
+  }
   // The classifier ring: cells whose centre lies in its solid belong to the chamber's body (the
   // same wall treatment, wall function included).
   const lbm::Grid& cells = gas.grid();
@@ -213,6 +262,22 @@ int build_chamber(lbm::LbmSolver& gas, const FluidConfig& f, const JetMillGeomet
       const double rx = c.x() - g.axis.x(), ry = c.y() - g.axis.y();
       if (rx * rx + ry * ry < g.outlet_radius * g.outlet_radius) gas.set_cell(x, y, top, outlet);
     }
+  // The gas must reach the vortex finder (a chamber STL may close it).
+  bool open = false;
+  for (int y = 0; y < grid.ny() && !open; ++y)
+    for (int x = 0; x < grid.nx() && !open; ++x) {
+      const Vec3 c = f.cell_centre(x, y, top - 1);
+      const double rx = c.x() - g.axis.x(), ry = c.y() - g.axis.y();
+      open = rx * rx + ry * ry < g.outlet_radius * g.outlet_radius &&
+             gas.flags().fluid(grid.index(x, y, top - 1));
+    }
+  if (!open)
+    throw InputError(g.meshed() ? g.chamber_key : "jet_mill.outlet_radius",
+                     g.meshed() ? "the chamber's STL" : to_text(g.outlet_radius),
+                     "no gas cell lies under the vortex finder (radius " +
+                         to_text(g.outlet_radius) + " m at the top plate's centre)",
+                     "open the chamber to the roof over the outlet, or widen "
+                     "jet_mill.outlet_radius");
   return outlet;
 }
 
@@ -240,10 +305,11 @@ JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const Je
     };
     std::vector<Weighted> cells;
     double total = 0;
+    long samples_all = 0, samples_gas = 0;
     for (int z = lo[2]; z <= hi[2]; ++z)
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int x = lo[0]; x <= hi[0]; ++x) {
-          if (!gas.flags().fluid(grid.index(x, y, z))) continue;
+          const bool fluid = gas.flags().fluid(grid.index(x, y, z));
           int in = 0;
           for (int sz = 0; sz < kSamples; ++sz)
             for (int sy = 0; sy < kSamples; ++sy)
@@ -254,13 +320,28 @@ JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const Je
                 const Vec3 r = p - q.exit;
                 const double s = r.dot(q.dir);
                 if (s < s0 || s > s0 + len || (r - s * q.dir).squaredNorm() > rs * rs) continue;
-                if (g.inside(p)) ++in;
+                ++samples_all;
+                // In an STL chamber the gas cells are the chamber; the cylinder is nominal.
+                if (fluid && (g.meshed() ? !g.in_classifier(p) : g.inside(p))) ++in;
               }
+          samples_gas += in;
           if (in == 0) continue;
           const double w = double(in) / (kSamples * kSamples * kSamples);
           cells.push_back({x, y, z, w});
           total += w;
         }
+    const double in_gas = double(samples_gas) / double(std::max(samples_all, 1L));
+    out.gas_fraction.push_back(in_gas);
+    // The mass and momentum stay exact (normalised below), but a source cut by a wall would put
+    // them where the nozzle is not.
+    if (g.meshed() && in_gas < 0.95)
+      throw InputError(g.chamber_key, "nozzle " + std::to_string(k + 1),
+                       "only " + to_text(100 * in_gas) +
+                           " % of its notional source lies in the chamber's gas: the STL's wall "
+                           "at the nozzle is inside the nominal radius " +
+                           to_text(g.radius) + " m (half the box's width)",
+                       "make the STL's wall meet the nozzles' circle (or move the nozzles: "
+                       "jet_mill.nozzles.first_deg, height)");
     if (total <= 0)
       throw InputError("jet_mill.nozzles", "nozzle " + std::to_string(k + 1),
                        "its notional source holds no fluid cell",

@@ -26,6 +26,7 @@
 // of each cell (4^3 samples) that lies in the notional cylinder and in the chamber, normalised to
 // 1 per nozzle, so the injected mass and momentum are exact on any grid.
 #include "core/config.hpp"
+#include "core/stl.hpp"
 #include "core/types.hpp"
 #include "lbm/lbm_solver.hpp"
 #include "lbm/units.hpp"
@@ -58,6 +59,17 @@ struct JetMillGeometry {
   // and wall thickness classifier_thickness reaching classifier_height below the plate (all 0:
   // none). Gas and particles see the same ring (solid cells; an analytic DEM tube wall).
   double classifier_radius = 0, classifier_thickness = 0, classifier_height = 0;
+  // Optional chamber from a user's STL (jet_mill.chamber_stl): a closed surface around the gas,
+  // in SI, inside the box. Its solid cells and the particles' side walls come from it in place of
+  // the cylinder; facets in the floor's or the roof's plane are left to the plates (the roof keeps
+  // the vortex finder's hole). `radius` stays half the box's width: the nozzles sit on that
+  // circle and the analysis (rings, distance from the wall) measures from it. Empty: the cylinder.
+  std::vector<Triangle> chamber_mesh;
+  std::string chamber_key;  // the config key of the file, named in errors
+  bool meshed() const { return !chamber_mesh.empty(); }
+  /// The chamber mesh's facets that are not in the floor's or the roof's plane (within 1e-6 of
+  /// the height): the particles' side walls.
+  std::vector<Triangle> side_facets() const;
   /// Whether SI point x lies in the classifier ring's solid.
   bool in_classifier(const Vec3& x) const;
   /// Whether SI point x lies inside the chamber's cylinder (the plates are the box's faces) and
@@ -66,22 +78,30 @@ struct JetMillGeometry {
 };
 
 /// Reads [jet_mill] against the gas ([fluid] already read: the box must be the chamber's bounding
-/// box). Keys: outlet_radius [m]; [jet_mill.classifier] (optional): radius, thickness (at least
-/// sqrt(2) gas cells, default 1.5), height [m]; [jet_mill.nozzles]: count, angle_deg (to the wall
-/// tangent), first_deg (azimuth of the first nozzle), height [m] (default mid-height), diameter
-/// [m], and either speed [m/s] with mass_flow [kg/s per nozzle; default rho U pi d^2 / 4], or
-/// supply_pressure [Pa absolute] with supply_temperature [K, default 293.15] and
-/// ambient_pressure [Pa, default 101325] (nozzle_flow.hpp: air through an ideal convergent
-/// nozzle). The jets turn counter-clockwise seen from +z. Throws InputError naming the key.
+/// box). Keys: outlet_radius [m]; chamber_stl (path of a closed STL around the gas, relative to
+/// the working directory) with chamber_stl_scale (1 for metres, 1e-3 for mm); [jet_mill.classifier]
+/// (optional): radius, thickness (at least sqrt(2) gas cells, default 1.5), height [m];
+/// [jet_mill.nozzles]: count, angle_deg (to the wall tangent), first_deg (azimuth of the first
+/// nozzle), height [m] (default mid-height), diameter [m], and either speed [m/s] with mass_flow
+/// [kg/s per nozzle; default rho U pi d^2 / 4], or supply_pressure [Pa absolute] with
+/// supply_temperature [K, default 293.15] and ambient_pressure [Pa, default 101325]
+/// (nozzle_flow.hpp: air through an ideal convergent nozzle). The jets turn counter-clockwise seen
+/// from +z. Throws InputError naming the key.
 JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& fluid);
 
-/// The lattice side of the geometry: solid cells outside the chamber (body "chamber"), the outlet
+/// The lattice side of the geometry: solid cells outside the chamber's cylinder or STL (body
+/// "chamber"; an STL that leaves no gas cell under the vortex finder is an InputError), the outlet
 /// cells in the top plate's ghost layer (a density outlet at the reference pressure), and the jets'
 /// mass sources and force density (lattice units, compact order). Returns the outlet's body id.
 struct JetSources {
   std::vector<lbm::LbmSolver::MassSource> mass;  // per gas step [lattice units]
   std::vector<Vec3> force;                       // per interior cell, compact order [lattice]
   std::vector<int> cells_per_nozzle;             // cells each source touches
+  // Per nozzle, the part of its notional cylinder's samples that fall in gas cells inside the
+  // chamber: 1 for a source clear of the walls (the analytic chamber guarantees it); an STL
+  // chamber whose wall at a nozzle lies inside the nominal radius gives less, and below 0.95 the
+  // set-up is an InputError naming the file.
+  std::vector<double> gas_fraction;
 };
 int build_chamber(lbm::LbmSolver& gas, const FluidConfig& fluid, const JetMillGeometry& g);
 JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& fluid,

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/stl.hpp"
+#include "helpers/meshes.hpp"
 #include "dem/walls/triangle_mesh.hpp"
 #include "lbm/geometry/cylinder.hpp"
 #include "lbm/geometry/lattice_frame.hpp"
@@ -32,6 +33,7 @@
 using namespace lbdem;
 using namespace lbdem::lbm;
 using Catch::Matchers::Contains;
+using lbdem::test::prism;
 
 namespace {
 
@@ -93,23 +95,6 @@ std::vector<Triangle> icosphere(const Vec3& centre, double r, int levels) {
   std::vector<Triangle> out;
   for (const auto& t : f)
     out.push_back({centre + r * v[t[0]], centre + r * v[t[1]], centre + r * v[t[2]]});
-  return out;
-}
-
-/// Closed prism with n sides inscribed in the cylinder (axis p + t a, t in [t0, t1], unit a).
-std::vector<Triangle> prism(const Vec3& p, const Vec3& a, double r, double t0, double t1, int n) {
-  const Vec3 e1 = a.unitOrthogonal(), e2 = a.cross(e1);
-  const Vec3 c0 = p + t0 * a, c1 = p + t1 * a;
-  std::vector<Triangle> out;
-  for (int k = 0; k < n; ++k) {
-    const double th0 = 2 * kPi * k / n, th1 = 2 * kPi * (k + 1) / n;
-    const Vec3 u0 = r * (std::cos(th0) * e1 + std::sin(th0) * e2);
-    const Vec3 u1 = r * (std::cos(th1) * e1 + std::sin(th1) * e2);
-    out.push_back({c0, c0 + u1, c0 + u0});
-    out.push_back({c1, c1 + u0, c1 + u1});
-    out.push_back({c0 + u0, c0 + u1, c1 + u1});
-    out.push_back({c0 + u0, c1 + u1, c1 + u0});
-  }
   return out;
 }
 

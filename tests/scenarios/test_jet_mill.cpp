@@ -18,8 +18,10 @@
 
 #include "core/config.hpp"
 #include "core/h5.hpp"
+#include "dem/walls/triangle_mesh.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/csv_table.hpp"
+#include "helpers/meshes.hpp"
 #include "helpers/resume_check.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 
@@ -445,4 +447,109 @@ TEST_CASE("jet mill classifier ring: solid for the gas where it stands, a wall f
     CHECK(b.err.find("'" + c.key) != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
   }
+}
+
+TEST_CASE("jet mill chamber from an STL: a faceted copy of the cylinder gives its cells and walls",
+          "[scenarios][jet_mill]") {
+  // The default preset on 1 mm cells for 0.5 ms, with the analytic cylinder and with a closed
+  // 256-sided prism inscribed in it, written in mm (jet_mill.chamber_stl_scale = 1e-3).
+  // - Solid cells: the same, exactly. Cell centres at (i + 1/2, j + 1/2) mm have r^2 = an integer
+  //   + 1/2 mm^2, at least 0.5 mm^2 from R^2 = 625 mm^2, so |r - R| >= 0.01 mm: beyond the
+  //   facets' sagitta R (1 - cos(pi / 256)) = 1.9 um, float32 storage and the voxelizer's rounding
+  //   (2^-13 cells).
+  // - The jets: the same mass flow, and all of each notional source in gas (the banner's
+  //   fraction is 1).
+  // - The particles: the prism's 512 side facets are their wall (the 512 cap facets are left to
+  //   the plates), and every centre stays inside the circle and between the plates.
+  const std::string dir = tmpdir("jet_mill_stl");
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const std::string& name, double r_mm, double h_mm) {
+    const std::string path = dir + "/" + name;
+    lbdem::dem::TriangleMesh::from_triangles(
+        lbdem::test::prism(lbdem::Vec3::Zero(), lbdem::Vec3::UnitZ(), r_mm, 0, h_mm, 256))
+        .write_stl_binary(path);
+    return path;
+  };
+  const std::string chamber = write("chamber.stl", 25, 5);
+  const std::string run =
+      " --threads 1 --set fluid.dx=1e-3 --set run.end_time=5e-4"
+      " --set output.interval=2.5e-4 --set output.checkpoint_interval=5e-4";
+  const std::string stl =
+      " --set 'jet_mill.chamber_stl=\"" + chamber + "\"' --set jet_mill.chamber_stl_scale=1e-3";
+  const auto a = cli("run jet_mill" + kFeedPreset + " --out " + dir + "/cyl" + run);
+  const auto m = cli("run jet_mill" + kFeedPreset + " --out " + dir + "/stl" + run + stl);
+  INFO(a.err << m.err);
+  REQUIRE(a.code == 0);
+  REQUIRE(m.code == 0);
+  const auto eps_a = lbdem::H5In(dir + "/cyl/snapshots/fluid_000000.h5").doubles("/porosity");
+  const auto eps_m = lbdem::H5In(dir + "/stl/snapshots/fluid_000000.h5").doubles("/porosity");
+  REQUIRE(eps_a.size() == eps_m.size());
+  std::size_t solid = 0, differ = 0;
+  for (std::size_t k = 0; k < eps_a.size(); ++k) {
+    solid += eps_a[k] == 0.0;
+    differ += (eps_a[k] == 0.0) != (eps_m[k] == 0.0);
+  }
+  CHECK(solid > 500);  // 50 x 50 cells less the circle's 1,976, on 5 layers: 2,620
+  CHECK(differ == 0);
+  const Table ta = read_csv(dir + "/cyl/timeseries.csv"),
+              tm = read_csv(dir + "/stl/timeseries.csv");
+  CHECK(tm.rows.back()[std::size_t(tm.col("jet_mass_flow_kg_s"))] ==
+        ta.rows.back()[std::size_t(ta.col("jet_mass_flow_kg_s"))]);
+  CHECK(tm.col("wall_chamber_force_z_N") >= 0);
+  const std::string log = lbdem::test::read_text(dir + "/stl/log.txt");
+  CHECK(log.find("512 side facets") != std::string::npos);
+  CHECK(log.find("source gas fraction 1 ") != std::string::npos);
+  {
+    // The particles' side wall is the mesh, without the caps.
+    std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/default.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string cfg = text.str();
+    cfg.replace(cfg.find("\n[jet_mill]\n"), 12,
+                "\n[jet_mill]\nchamber_stl = \"" + chamber + "\"\nchamber_stl_scale = 1e-3\n");
+    lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
+    const lbdem::dem::MeshWall* side = nullptr;
+    for (const auto& w : mill.box().solver().walls())
+      if (w.name == "chamber") side = std::get_if<lbdem::dem::MeshWall>(&w.shape);
+    REQUIRE(side != nullptr);
+    CHECK(side->mesh.size() == 512);
+  }
+  const auto x = lbdem::H5In(dir + "/stl/checkpoint.h5").doubles("/dem/x");
+  REQUIRE(x.size() > 2400);  // about 930 parcels (the feed test above)
+  std::size_t outside = 0;
+  for (std::size_t k = 0; k + 2 < x.size(); k += 3)
+    if (std::hypot(x[k], x[k + 1]) > kRadius || x[k + 2] < 0 || x[k + 2] > 0.005) ++outside;
+  CHECK(outside == 0);
+
+  // Bad input: exit 2, the key named, no run folder.
+  struct Case {
+    std::string set, key;
+  };
+  const std::vector<Case> bad = {
+      {" --set 'jet_mill.chamber_stl=\"" + dir + "/none.stl\"'", "jet_mill.chamber_stl"},
+      {" --set jet_mill.chamber_stl_scale=1e-3", "jet_mill.chamber_stl_scale"},
+      // The file in mm read as metres: 25 m across, outside the box.
+      {" --set 'jet_mill.chamber_stl=\"" + chamber + "\"'", "jet_mill.chamber_stl"},
+      // A wall 3 mm inside the nozzles' circle: their sources would sit in solid.
+      {" --set 'jet_mill.chamber_stl=\"" + write("narrow.stl", 22, 5) +
+           "\"' --set jet_mill.chamber_stl_scale=1e-3",
+       "jet_mill.chamber_stl"},
+      // A roof 1 mm below the top plate: no gas reaches the vortex finder.
+      {" --set 'jet_mill.chamber_stl=\"" + write("low.stl", 25, 4) +
+           "\"' --set jet_mill.chamber_stl_scale=1e-3",
+       "jet_mill.chamber_stl"},
+      // The feed (r up to 20 mm) reaching past an 18 mm wall.
+      {" --set 'jet_mill.chamber_stl=\"" + write("small.stl", 18, 5) +
+           "\"' --set jet_mill.chamber_stl_scale=1e-3",
+       "inflow.lo"},
+  };
+  for (const Case& c : bad) {
+    const auto b = cli("run jet_mill" + kFeedPreset + " --out " + dir + "/bad" + c.set);
+    INFO(c.set << ": " << b.err);
+    CHECK(b.code == 2);
+    CHECK(b.err.find("'" + c.key + "'") != std::string::npos);
+    CHECK(b.err.find("fix:") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
+  }
+  std::filesystem::remove_all(dir);
 }
