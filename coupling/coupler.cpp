@@ -48,6 +48,11 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   steps_done_ = 0;
   PhaseLap lap;
   const std::size_t np = p.size();
+  if (np == 0 && empty_fields_set_) {
+    report_ = empty_report_;
+    beta_.clear(), v_p_.clear(), f_grad_.clear();
+    return lap.to(Phase::coupling_interpolation_drag);
+  }
   report_ = ExchangeReport{};
   kernel_.locate(p.x);
   report_.unmapped = kernel_.unmapped_count();
@@ -123,6 +128,8 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   }
   gas_.set_porosity_field(eps_, alpha_);
   gas_.set_force_field(force_lat_);
+  empty_fields_set_ = np == 0;
+  if (empty_fields_set_) empty_report_ = report_;
   lap.to(Phase::coupling_interpolation_drag);
 }
 
@@ -131,6 +138,7 @@ void Coupler::set_gas_source(std::vector<Vec3> force) {
   if (!force.empty() && force.size() != std::size_t(g.nx()) * g.ny() * g.nz())
     throw std::invalid_argument("coupling: a gas source needs one force per interior cell");
   source_lat_ = std::move(force);
+  empty_fields_set_ = false;  // the force field changes
 }
 
 void Coupler::before_gas_step() {
