@@ -90,10 +90,13 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
   for (const Vec3& c : {lo, hi, Vec3(lo.x(), hi.y(), lo.z()), Vec3(hi.x(), lo.y(), hi.z())})
     if ((!g.meshed() && std::hypot(c.x() - g.axis.x(), c.y() - g.axis.y()) > g.radius) ||
         c.z() < g.axis.z() || c.z() > g.axis.z() + g.height)
-      throw InputError(inflow.path(c == hi ? "hi" : "lo"),
-                       to_text(c.x()) + ", " + to_text(c.y()) + ", " + to_text(c.z()),
-                       "a corner of the feed region lies outside the chamber",
-                       "keep inflow.lo - inflow.hi inside the cylinder of radius " +
+      throw InputError(
+          inflow.path(c == hi ? "hi" : "lo"),
+          to_text(c.x()) + ", " + to_text(c.y()) + ", " + to_text(c.z()),
+          "a corner of the feed region lies outside the chamber",
+          g.meshed() ? "keep inflow.lo - inflow.hi between the floor and the top plate (0 - " +
+                           to_text(g.height) + " m above box.lo)"
+                     : "keep inflow.lo - inflow.hi inside the cylinder of radius " +
                            to_text(g.radius) + " m and height " + to_text(g.height) + " m");
   if (g.classifier_height > 0) {
     // The feed region must not reach into the classifier ring: radial range of the region's x-y
@@ -169,27 +172,54 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
   }
 }
 
+namespace {
+// Whether triangle t meets the axis-aligned box [lo, hi] (touching included): no separating axis
+// among the box's three, the triangle's normal and the nine edge-axis products (Akenine-Moller
+// 2001, J. Graphics Tools 6(1), 29).
+bool triangle_meets_box(const Triangle& t, const Vec3& lo, const Vec3& hi) {
+  const Vec3 c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+  const Vec3 v[3] = {t[0] - c, t[1] - c, t[2] - c};
+  const auto separated = [&](const Vec3& ax) {
+    if (ax.squaredNorm() == 0) return false;
+    const double p0 = v[0].dot(ax), p1 = v[1].dot(ax), p2 = v[2].dot(ax);
+    const double r = h.x() * std::abs(ax.x()) + h.y() * std::abs(ax.y()) + h.z() * std::abs(ax.z());
+    return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+  };
+  const Vec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+  for (int a = 0; a < 3; ++a)
+    if (separated(Vec3::Unit(a))) return false;
+  if (separated(e[0].cross(e[1]))) return false;
+  for (const Vec3& ei : e)
+    for (int a = 0; a < 3; ++a)
+      if (separated(Vec3::Unit(a).cross(ei))) return false;
+  return true;
+}
+}  // namespace
+
 void JetMillScenario::check_feed_in_gas(const Config& cfg) const {
-  // Every gas cell whose centre lies in the feed region must be gas: the STL's wall may run
-  // anywhere inside the box. (A region narrower than a cell between centres passes unchecked;
-  // the insertion keeps spheres inside the region, and the walls hold them.)
+  // The feed region lies in an STL chamber if no facet of its side meets the region (the
+  // insertion keeps spheres inside the region) and the region's centre is in a gas cell.
   const Config inflow = cfg.section("inflow");
   const Vec3 lo = inflow.require_vec3("lo"), hi = inflow.require_vec3("hi");
+  const std::string where = "lo " + to_text(lo.x()) + ", " + to_text(lo.y()) + ", " +
+                            to_text(lo.z()) + "; hi " + to_text(hi.x()) + ", " + to_text(hi.y()) +
+                            ", " + to_text(hi.z());
+  for (const Triangle& t : geometry_.side_facets())
+    if (triangle_meets_box(t, lo, hi))
+      throw InputError(inflow.path("lo"), where,
+                       "the feed region meets the wall of the chamber's STL",
+                       "keep inflow.lo - inflow.hi inside the chamber");
   const FluidConfig& f = box_.fluid();
   const lbm::LbmSolver& gas = *box_.gas();
   const lbm::Grid& grid = gas.grid();
-  for (int z = 0; z < grid.nz(); ++z)
-    for (int y = 0; y < grid.ny(); ++y)
-      for (int x = 0; x < grid.nx(); ++x) {
-        const Vec3 c = f.cell_centre(x, y, z);
-        if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
-        if (!gas.flags().fluid(grid.index(x, y, z)))
-          throw InputError(
-              inflow.path("lo"), to_text(lo.x()) + ", " + to_text(lo.y()) + ", " + to_text(lo.z()),
-              "the feed region reaches the solid of the chamber's STL (at " + to_text(c.x()) +
-                  ", " + to_text(c.y()) + ", " + to_text(c.z()) + " m)",
-              "keep inflow.lo - inflow.hi inside the chamber");
-      }
+  const Vec3 m = 0.5 * (lo + hi);
+  int c[3];
+  for (int a = 0; a < 3; ++a) c[a] = int(std::floor((m[a] - f.lo[a]) / f.dx));
+  const bool inside = c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < grid.nx() && c[1] < grid.ny() &&
+                      c[2] < grid.nz() && gas.flags().fluid(grid.index(c[0], c[1], c[2]));
+  if (!inside)
+    throw InputError(inflow.path("lo"), where, "the feed region lies outside the chamber's STL",
+                     "keep inflow.lo - inflow.hi inside the chamber");
 }
 
 double JetMillScenario::outlet_mass_flow() const {

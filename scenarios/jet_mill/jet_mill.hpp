@@ -27,6 +27,7 @@ class JetMillScenario : public Scenario {
   const OutputSettings& output() const override { return box_.output(); }
   BoxScenario& box() { return box_; }
   const JetMillGeometry& geometry() const { return geometry_; }
+  const JetSources& sources() const { return sources_; }
   int outlet_body() const { return outlet_; }
   /// Gas leaving through the outlet in the last gas step [kg/s].
   double outlet_mass_flow() const;

@@ -64,11 +64,14 @@ struct JetMillGeometry {
   // the cylinder; facets in the floor's or the roof's plane are left to the plates (the roof keeps
   // the vortex finder's hole). `radius` stays half the box's width: the nozzles sit on that
   // circle and the analysis (rings, distance from the wall) measures from it. Empty: the cylinder.
+  // The file is read again on a resume: a changed file gives another chamber.
   std::vector<Triangle> chamber_mesh;
   std::string chamber_key;  // the config key of the file, named in errors
+  double plate_tol = 0;     // a facet within this of the floor's or roof's plane lies in it [m]
   bool meshed() const { return !chamber_mesh.empty(); }
-  /// The chamber mesh's facets that are not in the floor's or the roof's plane (within 1e-6 of
-  /// the height): the particles' side walls.
+  /// The chamber mesh's facets that are not in the floor's or the roof's plane (within
+  /// plate_tol, 1e-3 of a gas cell: float32 STL corners far from the origin): the particles'
+  /// side walls.
   std::vector<Triangle> side_facets() const;
   /// Whether SI point x lies in the classifier ring's solid.
   bool in_classifier(const Vec3& x) const;
@@ -98,9 +101,9 @@ struct JetSources {
   std::vector<Vec3> force;                       // per interior cell, compact order [lattice]
   std::vector<int> cells_per_nozzle;             // cells each source touches
   // Per nozzle, the part of its notional cylinder's samples that fall in gas cells inside the
-  // chamber: 1 for a source clear of the walls (the analytic chamber guarantees it); an STL
-  // chamber whose wall at a nozzle lies inside the nominal radius gives less, and below 0.95 the
-  // set-up is an InputError naming the file.
+  // chamber (the banner): 1 for a source clear of the walls, which read_jet_mill ensures for the
+  // cylinder and jet_sources checks on the cells for an STL chamber (an InputError naming the
+  // file when its wall comes within 1.5 cells of a source or misses the nozzles' circle).
   std::vector<double> gas_fraction;
 };
 int build_chamber(lbm::LbmSolver& gas, const FluidConfig& fluid, const JetMillGeometry& g);

@@ -18,6 +18,7 @@
 
 #include "core/config.hpp"
 #include "core/h5.hpp"
+#include "dem/walls/cuboid_mesh.hpp"
 #include "dem/walls/triangle_mesh.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/csv_table.hpp"
@@ -491,28 +492,34 @@ TEST_CASE("jet mill chamber from an STL: a faceted copy of the cylinder gives it
   }
   CHECK(solid > 500);  // 50 x 50 cells less the circle's 1,976, on 5 layers: 2,620
   CHECK(differ == 0);
-  const Table ta = read_csv(dir + "/cyl/timeseries.csv"),
-              tm = read_csv(dir + "/stl/timeseries.csv");
-  CHECK(tm.rows.back()[std::size_t(tm.col("jet_mass_flow_kg_s"))] ==
-        ta.rows.back()[std::size_t(ta.col("jet_mass_flow_kg_s"))]);
-  CHECK(tm.col("wall_chamber_force_z_N") >= 0);
   const std::string log = lbdem::test::read_text(dir + "/stl/log.txt");
   CHECK(log.find("512 side facets") != std::string::npos);
   CHECK(log.find("source gas fraction 1 ") != std::string::npos);
   {
-    // The particles' side wall is the mesh, without the caps.
+    // The particles' side wall is the mesh, without the caps; the jets' sources (cells, mass,
+    // force) are the cylinder's exactly: every sample of a source lies 1.5 cells or more from the
+    // wall, so both chambers count the same samples.
     std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/default.toml");
     std::stringstream text;
     text << in.rdbuf();
-    std::string cfg = text.str();
+    const std::string cyl_cfg = text.str();
+    std::string cfg = cyl_cfg;
     cfg.replace(cfg.find("\n[jet_mill]\n"), 12,
                 "\n[jet_mill]\nchamber_stl = \"" + chamber + "\"\nchamber_stl_scale = 1e-3\n");
     lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
+    lbdem::scenarios::JetMillScenario cyl(lbdem::Config::from_string(cyl_cfg));
     const lbdem::dem::MeshWall* side = nullptr;
     for (const auto& w : mill.box().solver().walls())
       if (w.name == "chamber") side = std::get_if<lbdem::dem::MeshWall>(&w.shape);
     REQUIRE(side != nullptr);
     CHECK(side->mesh.size() == 512);
+    const auto &sm = mill.sources(), &sc = cyl.sources();
+    REQUIRE(sm.mass.size() == sc.mass.size());
+    bool same = sm.force == sc.force;
+    for (std::size_t k = 0; k < sm.mass.size(); ++k)
+      same = same && sm.mass[k].x == sc.mass[k].x && sm.mass[k].y == sc.mass[k].y &&
+             sm.mass[k].z == sc.mass[k].z && sm.mass[k].mass == sc.mass[k].mass;
+    CHECK(same);
   }
   const auto x = lbdem::H5In(dir + "/stl/checkpoint.h5").doubles("/dem/x");
   REQUIRE(x.size() > 2400);  // about 930 parcels (the feed test above)
@@ -521,33 +528,46 @@ TEST_CASE("jet mill chamber from an STL: a faceted copy of the cylinder gives it
     if (std::hypot(x[k], x[k + 1]) > kRadius || x[k + 2] < 0 || x[k + 2] > 0.005) ++outside;
   CHECK(outside == 0);
 
-  // Bad input: exit 2, the key named, no run folder.
+  // Bad input: exit 2, the key and the reason named, no run folder.
   struct Case {
-    std::string set, key;
+    std::string set, key, why;
   };
+  const std::string mm = "' --set jet_mill.chamber_stl_scale=1e-3";
+  const auto stl_at = [&](const std::string& path) {
+    return " --set 'jet_mill.chamber_stl=\"" + path + "\"";
+  };
+  // A square chamber filling the box: at 45 degrees its wall lies outside the nozzles' circle.
+  const std::string square = dir + "/square.stl";
+  lbdem::dem::cuboid_mesh(lbdem::Vec3(0, 0, 2.5),
+                          {lbdem::Vec3::UnitX(), lbdem::Vec3::UnitY(), lbdem::Vec3::UnitZ()},
+                          lbdem::Vec3(25, 25, 2.5))
+      .write_stl_binary(square);
   const std::vector<Case> bad = {
-      {" --set 'jet_mill.chamber_stl=\"" + dir + "/none.stl\"'", "jet_mill.chamber_stl"},
-      {" --set jet_mill.chamber_stl_scale=1e-3", "jet_mill.chamber_stl_scale"},
+      {stl_at(dir + "/none.stl") + "'", "jet_mill.chamber_stl", ""},
+      {" --set jet_mill.chamber_stl_scale=1e-3", "jet_mill.chamber_stl_scale", "not given"},
       // The file in mm read as metres: 25 m across, outside the box.
-      {" --set 'jet_mill.chamber_stl=\"" + chamber + "\"'", "jet_mill.chamber_stl"},
+      {stl_at(chamber) + "'", "jet_mill.chamber_stl", "outside the box"},
       // A wall 3 mm inside the nozzles' circle: their sources would sit in solid.
-      {" --set 'jet_mill.chamber_stl=\"" + write("narrow.stl", 22, 5) +
-           "\"' --set jet_mill.chamber_stl_scale=1e-3",
-       "jet_mill.chamber_stl"},
-      // A roof 1 mm below the top plate: no gas reaches the vortex finder.
-      {" --set 'jet_mill.chamber_stl=\"" + write("low.stl", 25, 4) +
-           "\"' --set jet_mill.chamber_stl_scale=1e-3",
-       "jet_mill.chamber_stl"},
+      {stl_at(write("narrow.stl", 22, 5)) + mm, "jet_mill.chamber_stl", "within 1.5 cells"},
+      {stl_at(square) + mm + " --set jet_mill.nozzles.first_deg=45.0", "jet_mill.chamber_stl",
+       "outside the nozzles' circle"},
+      // A roof 2 mm below the top plate: no gas reaches the vortex finder.
+      {stl_at(write("low.stl", 25, 3)) + mm, "jet_mill.chamber_stl", "no gas cell"},
+      // A roof 0.1 mm below it: gas passes, but the roof would close the outlet to particles
+      // (within 1.5 cells of the plate: so would one 1 mm below it, on these 1 mm cells).
+      {stl_at(write("lid.stl", 25, 4.9)) + mm, "jet_mill.chamber_stl", "covers the vortex"},
+      {stl_at(chamber) + mm + " --set jet_mill.classifier.radius=0.007" +
+           " --set jet_mill.classifier.height=0.003",
+       "jet_mill.classifier", "in the chamber's STL"},
       // The feed (r up to 20 mm) reaching past an 18 mm wall.
-      {" --set 'jet_mill.chamber_stl=\"" + write("small.stl", 18, 5) +
-           "\"' --set jet_mill.chamber_stl_scale=1e-3",
-       "inflow.lo"},
+      {stl_at(write("small.stl", 18, 5)) + mm, "inflow.lo", "meets the wall"},
   };
   for (const Case& c : bad) {
     const auto b = cli("run jet_mill" + kFeedPreset + " --out " + dir + "/bad" + c.set);
     INFO(c.set << ": " << b.err);
     CHECK(b.code == 2);
     CHECK(b.err.find("'" + c.key + "'") != std::string::npos);
+    CHECK(b.err.find(c.why) != std::string::npos);
     CHECK(b.err.find("fix:") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
   }
