@@ -111,7 +111,8 @@ class Coupler {
   // Two-way: the gas holds the fields of an interval without particles (eps = 1, no drag, the
   // source alone), and that interval's report. A following interval without particles would set
   // the same values again, so it skips its grid passes (the jet mill's gas spin-up: 12 % of the
-  // run's time went to them).
+  // run's time went to them). This holds while nothing outside the coupler writes the gas's
+  // porosity or force fields (the jet mill sets its sources through set_gas_source).
   bool empty_fields_set_ = false;
   ExchangeReport empty_report_;
 };

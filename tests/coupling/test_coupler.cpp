@@ -404,8 +404,9 @@ TEST_CASE("two-way intervals without particles skip their grid passes and change
   // An interval without particles after another one sets nothing in the gas (coupler.hpp): its
   // fields are already eps = 1, no drag and the source. Against a coupler built afresh for every
   // interval (which never skips): empty intervals, a source that changes between two of them,
-  // then particles fed in. The gas's density and velocity and the particles' state must be
-  // bitwise the same (no tolerance: the same arithmetic in the same order, or a defect).
+  // particles fed in, all removed, and fed in again. The gas's density and velocity and the
+  // particles' state must be bitwise the same (no tolerance: the same arithmetic in the same order,
+  // or a defect).
   const double dx = 1e-4, dt_gas = 2e-5;
   auto ds = test::settings(dt_gas / 2);
   ds.domain.periodic = {true, true, true};
@@ -426,16 +427,18 @@ TEST_CASE("two-way intervals without particles skip their grid passes and change
   };
   std::vector<Vec3> src = source(1e-6);
   kept.coupler->set_gas_source(src);
-  for (int n = 0; n < 12; ++n) {
+  for (int n = 0; n < 16; ++n) {
     if (n == 4) {  // a new source between two empty intervals
       src = source(-2e-6);
       kept.coupler->set_gas_source(src);
     }
-    if (n == 7)  // particles arrive
+    if (n == 7 || n == 13)  // particles arrive
       for (Rig* r : {&kept, &fresh})
         for (int i = 0; i < 6; ++i)
           r->dem->add_particle(Vec3(0.2 + 0.1 * i, 0.5, 0.3 + 0.05 * i) * 8 * dx,
                                Vec3(0.01, 0, -0.02), 50e-6, 0);
+    if (n == 10)  // and leave: the first empty interval after them must set the fields again
+      for (Rig* r : {&kept, &fresh}) r->dem->remove_particles({0, 1, 2, 3, 4, 5});
     fresh.couple(cs);
     fresh.coupler->set_gas_source(src);
     kept.interval();
