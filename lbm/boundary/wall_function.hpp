@@ -60,15 +60,20 @@ struct WernerWengle {
   double kinematic_stress(double u, double dz = 1.0) const;
 };
 
-/// The same law for one cell height, with its constants evaluated once: one pow per call instead
-/// of five (the wall function runs on every wall cell every step).
+/// The same law for one cell height, with its constants evaluated once: two square roots per call
+/// instead of five pows (the wall function runs on every wall cell every step).
 struct WernerWengleCell {
   double switch_speed;  // top of the linear branch
   double linear;        // 2 nu / dz
   double c0, c1;  // the power branch's (1-B)/2 A^((1+B)/(1-B)) (nu/dz)^(1+B) and (1+B)/A (nu/dz)^B
   WernerWengleCell(const WernerWengle& law, double dz = 1.0);
   double kinematic_stress(double u) const {
-    return u <= switch_speed ? linear * u : std::pow(c0 + c1 * u, 2.0 / (1.0 + WernerWengle::kB));
+    // 2 / (1 + B) = 7/4: x^(7/4) = x sqrt(x sqrt(x)), two roots in place of a pow (the pow
+    // alone took 3.5 % of the default jet mill run).
+    static_assert(WernerWengle::kB == 1.0 / 7.0);
+    if (u <= switch_speed) return linear * u;
+    const double x = c0 + c1 * u;
+    return x * std::sqrt(x * std::sqrt(x));
   }
 };
 
