@@ -33,18 +33,23 @@ struct ContactLaw {
     return 0.0;
   }
 
+  /// The cohesive pull at g (0 without cohesion); books its potential into out.u_elastic.
+  static double cohesion(const Params& p, const ContactGeometry& g, ContactForce& out) {
+    if constexpr (Cohesion::active) {
+      const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
+      out.u_elastic = c.u;
+      return c.f;
+    }
+    return 0.0;
+  }
+
   /// Force on i from j apart (delta <= 0): cohesion only, and the springs released. It reads only
   /// g.n, g.delta and g.r_star, so a caller may leave the kinematics unset (about half the listed
   /// pairs of a cohesive bed are in this state, measured on the Bo 10 original: 149,500 of 303,221
   /// interacting pairs).
   static ContactForce evaluate_apart(const Params& p, const ContactGeometry& g, ContactHistory& h) {
     ContactForce out;
-    double f_coh = 0;
-    if constexpr (Cohesion::active) {
-      const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
-      f_coh = c.f;
-      out.u_elastic = c.u;
-    }
+    const double f_coh = cohesion(p, g, out);
     out.e_stiffness = -0.5 * h.kt * h.xi.squaredNorm() - 0.5 * h.kr * h.theta.squaredNorm();
     h = ContactHistory{};
     out.force = f_coh * g.n;
@@ -70,12 +75,7 @@ struct ContactLaw {
                                double dt) {
     if (g.delta <= 0) return evaluate_apart(p, g, h);
     ContactForce out;
-    double f_coh = 0;
-    if constexpr (Cohesion::active) {
-      const auto c = Cohesion::eval(p.cohesion, g.delta, g.r_star);
-      f_coh = c.f;
-      out.u_elastic = c.u;
-    }
+    const double f_coh = cohesion(p, g, out);
     const auto s = Normal::elastic(p.normal, g.delta, g.r_star);
     const double vn = g.v_rel.dot(g.n);
     const double gam = Normal::gamma(p.normal, s, g.m_star);
