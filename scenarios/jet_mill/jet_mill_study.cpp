@@ -34,7 +34,9 @@ const std::vector<Case>& cases() {
       {"cg1", 1, true},          {"cg2", 2, true},         {"cg4", 4, true},
       {"cg8", 8, true},          {"cg10", 10, true},       {"cg1_fixed", 1, false},
       {"cg2_fixed", 2, false},   {"cg4_fixed", 4, false},  {"cg8_fixed", 8, false},
-      {"cg10_fixed", 10, false}, {"cg10_tc30", 10, false}, {"cg10_p5bar", 10, false}};
+      {"cg10_fixed", 10, false}, {"cg10_tc30", 10, false}, {"cg1_p5bar", 1, false},
+      {"cg2_p5bar", 2, false},   {"cg4_p5bar", 4, false},  {"cg8_p5bar", 8, false},
+      {"cg10_p5bar", 10, false}};
   return c;
 }
 
@@ -231,7 +233,14 @@ int run_jet_mill_study(const StudyOptions& opt) {
   // The table: one row per case.
   const auto coll = read_rows(root + "/collisions.csv");
   const auto ke = read_rows(root + "/kinetic_energy_stats.csv");
-  double wall_cg1 = std::nan(""), rate_prev = std::nan("");
+  // Each case is compared with CG 1 of its own series: the name after "cgN" ("", "_fixed",
+  // "_p5bar"; "_tc30" has none).
+  const auto series_ref = [](const std::string& name) {
+    const std::size_t us = name.find('_');
+    return "cg1" + (us == std::string::npos ? std::string() : name.substr(us));
+  };
+  std::map<std::string, double> wall_ref;
+  double rate_prev = std::nan("");
   int n_prev = 0;
   std::ostringstream table;
   table
@@ -255,7 +264,9 @@ int run_jet_mill_study(const StudyOptions& opt) {
     };
     const auto [wall, timed] = read_timing(dir);
     const double wps = wall > 0 && timed > 0 ? wall / timed : std::nan("");
-    if (c->name == "cg1" || c->name == "cg1_fixed") wall_cg1 = wps;
+    if (c->n == 1) wall_ref[c->name] = wps;
+    const std::string ref = series_ref(c->name);
+    const double wall_cg1 = wall_ref.count(ref) ? wall_ref[ref] : std::nan("");
     const double rate_pp = get(cr, "rate_pp_per_s");
     // Change of the particle-particle collision rate per doubling of n from the previous case
     // (the study reports about -60 %): (rate / rate_prev)^(1 / log2(n / n_prev)) - 1.
@@ -281,8 +292,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
           << fmt(get(cr, "dissipated_J") * dem_dt[c->name] / span) << ","
           << fmt(get(cr, "dissipated_per_kg_J_per_kg")) << "," << fmt(removed) << "," << fmt(wps)
           << "," << fmt(wall_cg1 / wps);
-    // The split against CG 1 of the same grid set (the parcels fed, not the banner's zero).
-    const std::string ref = c->name.find("_fixed") != std::string::npos ? "cg1_fixed" : "cg1";
+    // The split against CG 1 of the same series (the parcels fed, not the banner's zero).
     const std::string ref_dir = root + "/" + ref;
     // Only a reference that reached the window's end (a CG 1 still feeding would be compared on
     // its lighter, earlier part).
