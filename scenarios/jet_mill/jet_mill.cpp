@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "scenarios/jet_mill/chamber_stl.hpp"
 
 namespace lbdem::scenarios {
 
@@ -171,30 +172,6 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
     box_.add_wall(std::move(ring));
   }
 }
-
-namespace {
-// Whether triangle t meets the axis-aligned box [lo, hi] (touching included): no separating axis
-// among the box's three, the triangle's normal and the nine edge-axis products (Akenine-Moller
-// 2001, J. Graphics Tools 6(1), 29).
-bool triangle_meets_box(const Triangle& t, const Vec3& lo, const Vec3& hi) {
-  const Vec3 c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
-  const Vec3 v[3] = {t[0] - c, t[1] - c, t[2] - c};
-  const auto separated = [&](const Vec3& ax) {
-    if (ax.squaredNorm() == 0) return false;
-    const double p0 = v[0].dot(ax), p1 = v[1].dot(ax), p2 = v[2].dot(ax);
-    const double r = h.x() * std::abs(ax.x()) + h.y() * std::abs(ax.y()) + h.z() * std::abs(ax.z());
-    return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
-  };
-  const Vec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
-  for (int a = 0; a < 3; ++a)
-    if (separated(Vec3::Unit(a))) return false;
-  if (separated(e[0].cross(e[1]))) return false;
-  for (const Vec3& ei : e)
-    for (int a = 0; a < 3; ++a)
-      if (separated(Vec3::Unit(a).cross(ei))) return false;
-  return true;
-}
-}  // namespace
 
 void JetMillScenario::check_feed_in_gas(const Config& cfg) const {
   // The feed region lies in an STL chamber if no facet of its side meets the region (the
