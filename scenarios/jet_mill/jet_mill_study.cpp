@@ -233,15 +233,17 @@ int run_jet_mill_study(const StudyOptions& opt) {
   // The table: one row per case.
   const auto coll = read_rows(root + "/collisions.csv");
   const auto ke = read_rows(root + "/kinetic_energy_stats.csv");
-  // Each case is compared with CG 1 of its own series: the name after "cgN" ("", "_fixed",
-  // "_p5bar"; "_tc30" has none).
+  // Each case is compared with CG 1 of its own series, named after "cgN": the scaled cells ("",
+  // and cg10_tc30, cg10 with a shorter DEM step), "_fixed", "_p5bar".
   const auto series_ref = [](const std::string& name) {
     const std::size_t us = name.find('_');
-    return "cg1" + (us == std::string::npos ? std::string() : name.substr(us));
+    const std::string series = us == std::string::npos ? "" : name.substr(us);
+    return "cg1" + (series == "_tc30" ? std::string() : series);
   };
   std::map<std::string, double> wall_ref;
   double rate_prev = std::nan("");
   int n_prev = 0;
+  std::string series_prev;
   std::ostringstream table;
   table
       << "case,originals_per_parcel,size_factor,parcels,window_from_s,window_to_s,simulated_s,"
@@ -270,11 +272,12 @@ int run_jet_mill_study(const StudyOptions& opt) {
     const double rate_pp = get(cr, "rate_pp_per_s");
     // Change of the particle-particle collision rate per doubling of n from the previous case
     // (the study reports about -60 %): (rate / rate_prev)^(1 / log2(n / n_prev)) - 1.
+    // Within a series only (a partly run series may sit next to another in `present`).
     const double per_doubling =
-        n_prev > 0 && c->n > n_prev
+        n_prev > 0 && c->n > n_prev && ref == series_prev
             ? std::pow(rate_pp / rate_prev, 1.0 / std::log2(double(c->n) / n_prev)) - 1
             : std::nan("");
-    rate_prev = rate_pp, n_prev = c->n;
+    rate_prev = rate_pp, n_prev = c->n, series_prev = ref;
     const double span = get(cr, "t_to_s") - get(cr, "t_from_s");
     table << c->name << "," << c->n << "," << fmt(std::cbrt(double(c->n))) << ","
           << fmt(parcels, "%.0f") << "," << fmt(from - spin_up) << "," << fmt(to - spin_up) << ","
