@@ -105,8 +105,8 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
   const Nozzle& q = g.nozzles[k];
   const lbm::Grid& grid = gas.grid();
   const double rs = q.source_radius, len = 2 * rs, reach = rs + 1.5 * f.dx;
-  const auto cell_of = [&](const Vec3& p, int a) {
-    return int(std::floor((p[a] - f.lo[a]) / f.dx));
+  const auto cell_of = [&](double coordinate, int a) {
+    return int(std::floor((coordinate - f.lo[a]) / f.dx));
   };
   const auto gas_at = [&](int x, int y, int z) {
     return x >= 0 && y >= 0 && z >= 0 && x < grid.nx() && y < grid.ny() && z < grid.nz() &&
@@ -116,8 +116,8 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
   int lo[3], hi[3];
   for (int a = 0; a < 3; ++a) {
     const double b0 = q.exit[a] + s0 * q.dir[a], b1 = b0 + len * q.dir[a];
-    lo[a] = cell_of(Vec3::Constant(std::min(b0, b1) - reach), a) - 1;
-    hi[a] = cell_of(Vec3::Constant(std::max(b0, b1) + reach), a) + 1;
+    lo[a] = cell_of(std::min(b0, b1) - reach, a) - 1;
+    hi[a] = cell_of(std::max(b0, b1) + reach, a) + 1;
   }
   for (int z = lo[2]; z <= hi[2]; ++z)
     for (int y = lo[1]; y <= hi[1]; ++y)
@@ -138,7 +138,7 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
   Vec3 out = q.exit - g.axis;
   out.z() = 0;
   const Vec3 behind = q.exit + 0.75 * f.dx * out.normalized();
-  if (gas_at(cell_of(behind, 0), cell_of(behind, 1), cell_of(behind, 2)))
+  if (gas_at(cell_of(behind.x(), 0), cell_of(behind.y(), 1), cell_of(behind.z(), 2)))
     throw InputError(g.chamber_key, nozzle,
                      "the STL's wall at the nozzle lies outside the nozzles' circle of radius " +
                          to_text(g.radius) + " m (gas 0.75 cells behind the exit)",
