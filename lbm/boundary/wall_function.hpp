@@ -85,6 +85,9 @@ struct WallFunctionCells {
   std::vector<Vec3> e1, e2;          // tangent basis
   std::vector<double> area;          // wall area [cells^2]
   std::vector<std::array<double, 3>> m_pinv;  // pseudo-inverse of M_t / rho_w: (11, 12, 22)
+  // The cell's centre [lattice coordinates]. Its links act at x + c_q / 2, and c_q x c_q = 0, so
+  // their torque is (x - origin) x F_cell: one cross product per cell instead of one per link.
+  std::vector<Vec3> centre;
   std::size_t size() const { return cell.size(); }
 };
 
