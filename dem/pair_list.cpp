@@ -11,8 +11,6 @@ void PairList::resize(std::size_t n) {
   history.assign(n, ContactHistory{});
   tally.assign(n, ContactTally{});
   state.assign(n, 0);
-  j_force.assign(n, Vec3::Zero());
-  j_torque.assign(n, Vec3::Zero());
 }
 
 void PairList::build_transpose(std::size_t np) {

@@ -50,6 +50,7 @@ struct PairList {
   std::vector<Vec3> j_force, j_torque;
 
   std::size_t size() const { return i.size(); }
+  /// n pairs with zeroed springs, tallies and states; the j side is sized by build_transpose.
   void resize(std::size_t n);
   /// Builds jfirst/jslot from (i, j) for n_particles particles (stable: ascending pair index) and
   /// zeroes the j-side loads.
