@@ -33,8 +33,12 @@ Coupler::Coupler(lbm::LbmSolver& gas, const lbm::LatticeFrame& frame,
 }
 
 void Coupler::pressure(std::vector<double>& p) const {
-  gas_.density(p);  // solid cells read 0
-  for (double& v : p) v = v > 0 ? units_.pressure_to_si((v - 1.0) * lbm::kCs2) : 0.0;
+  gas_.density(p);
+  density_to_pressure(p);
+}
+
+void Coupler::density_to_pressure(std::vector<double>& p) const {
+  for (double& v : p) v = v > 0 ? units_.pressure_to_si((v - 1.0) * lbm::kCs2) : 0.0;  // solid: 0
 }
 
 Vec3 Coupler::gas_momentum() const {
@@ -66,7 +70,11 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
   eps_.swap(cell_scalar_);
   lap.to(Phase::coupling_porosity);
-  gas_.raw_velocity(cell_vec_);
+  // The density for grad p comes from the same pass over the populations.
+  if (s_.pressure_gradient)
+    gas_.raw_moments(pressure_, cell_vec_);
+  else
+    gas_.raw_velocity(cell_vec_);
   if (s_.two_way)
     for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
   const double to_si = units_.velocity_to_si(1.0);
@@ -100,9 +108,8 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   // Pressure-gradient force -V_p grad p at the particles.
   f_grad_.assign(np, Vec3::Zero());
   if (s_.pressure_gradient) {
-    std::vector<double> pr;
-    pressure(pr);
-    kernel_.pressure_gradient(pr, cell_vec_);
+    density_to_pressure(pressure_);
+    kernel_.pressure_gradient(pressure_, cell_vec_);
     kernel_.interpolate(cell_vec_, f_grad_);
     for (std::size_t k = 0; k < np; ++k)
       f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);

@@ -105,7 +105,7 @@ class Coupler {
   CouplerSettings s_;
   ParticleKernel kernel_;
   int steps_ = 0, steps_done_ = 0;
-  std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_;
+  std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_, pressure_;
   std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_, source_lat_;
   ExchangeReport report_;
   // Two-way: the gas holds the fields of an interval without particles (eps = 1, no drag, the
@@ -115,6 +115,7 @@ class Coupler {
   // porosity or force fields (the jet mill sets its sources through set_gas_source).
   bool empty_fields_set_ = false;
   ExchangeReport empty_report_;
+  void density_to_pressure(std::vector<double>& p) const;  // in place, lattice density -> [Pa]
 };
 
 }  // namespace lbdem::coupling

@@ -434,7 +434,9 @@ CellMoments LbmSolver::moments(int x, int y, int z) const {
 }
 
 void LbmSolver::density(std::vector<double>& rho) const {
-  with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, &rho, nullptr); });
+  // rho = sum_q f_q whatever the force (cell.hpp): the forcing policy's moments would only add
+  // the velocity's work.
+  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, nullptr);
 }
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
@@ -445,11 +447,15 @@ void LbmSolver::raw_velocity(std::vector<Vec3>& u) const {
   moment_fields(pdf_, state_, NoForce{}, flags_, nullptr, &u);
 }
 
+void LbmSolver::raw_moments(std::vector<double>& rho, std::vector<Vec3>& u) const {
+  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, &u);
+}
+
 Vec3 LbmSolver::raw_momentum() const {
   // NoForce moments: rho u = sum_q c_q f_q, with no half-force shift and no porous scaling.
   std::vector<double> rho;
   std::vector<Vec3> u;
-  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, &u);
+  raw_moments(rho, u);
   return deterministic_sum(
       rho.size(), [&](std::size_t i) { return Vec3(rho[i] * u[i]); }, Vec3(Vec3::Zero()));
 }

@@ -167,6 +167,8 @@ class LbmSolver {
   /// sum_q c_q f_q / rho: the populations' velocity without the half-force shift or the porous
   /// form's implicit drag, a function of the populations alone.
   void raw_velocity(std::vector<Vec3>& u) const;
+  /// density() and raw_velocity() in one pass over the populations.
+  void raw_moments(std::vector<double>& rho, std::vector<Vec3>& u) const;
   /// Sum of rho over fluid cells, bitwise independent of the thread count.
   double total_mass() const;
   /// Sum over fluid cells of sum_q c_q f_q, the momentum before the half-force shift [lattice
