@@ -154,6 +154,7 @@ void LbmSolver::rebuild_links() {
           build_outlet(b.links, flags_, b.outlet_density, b.outlet_extrapolate, b.outlet_backflow);
     b.wall_cells = b.wall_function ? build_wall_function_cells(b.links) : WallFunctionCells{};
   }
+  runs_ = fluid_runs(grid(), flags_);
   bool any_wall_function = false;
   for (const Body& b : bodies_) any_wall_function = any_wall_function || b.wall_function;
   for (auto& a : cell_moments_)
@@ -330,7 +331,7 @@ void LbmSolver::step() {
   with_forcing(
       [&](const auto& forcing) {
         const auto collide = [&](const auto& policy) {
-          std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, policy); },
+          std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, policy, &runs_); },
                      settings_.collision);
         };
         if (cell_moments_[0].empty()) return collide(forcing);

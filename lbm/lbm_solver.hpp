@@ -17,6 +17,7 @@
 #include "lbm/boundary/wall_function.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/collision/collision_model.hpp"
+#include "lbm/fluid_runs.hpp"
 #include "lbm/forcing/guo.hpp"
 #include "lbm/grid.hpp"
 #include "lbm/pdf_field.hpp"
@@ -215,6 +216,7 @@ class LbmSolver {
   AaState state_ = AaState::natural;
   long steps_ = 0;
   bool links_dirty_ = true;
+  FluidRuns runs_;  // the cells the collision visits, rebuilt with the links
 };
 
 }  // namespace lbdem::lbm

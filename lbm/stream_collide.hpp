@@ -22,6 +22,7 @@
 #include "lbm/cell.hpp"
 #include "lbm/collision/collision_operator.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/fluid_runs.hpp"
 #include "lbm/grid.hpp"
 #include "lbm/pdf_field.hpp"
 
@@ -45,20 +46,26 @@ inline void collide_cells(const C& coll, const Forcing& forcing, const double* c
   }
 }
 
-/// One time step over all interior cells, starting from state s; the caller then applies the
-/// boundary links for state after_step(s). Rows are split statically over the threads and every
-/// cell is computed by the same instructions whatever the thread count: bitwise reproducible.
+/// One time step over the fluid cells (runs; all interior cells if null), starting from state s;
+/// the caller then applies the boundary links for state after_step(s). Rows are split statically
+/// over the threads and every cell is computed by the same instructions whatever the thread
+/// count: bitwise reproducible.
 template <CollisionOperator C, class Forcing>
-void stream_collide(PdfField& pdf, AaState s, const C& coll, const Forcing& forcing) {
+void stream_collide(PdfField& pdf, AaState s, const C& coll, const Forcing& forcing,
+                    const FluidRuns* runs = nullptr) {
   const Grid& g = pdf.grid();
+  const auto collide_range = [&](int x0, int x1, int y, int z) {
+    const double* in[kQ];
+    double* out[kQ];
+    read_pointers(pdf, s, x0, y, z, in);
+    write_pointers(pdf, s, x0, y, z, out);
+    collide_cells(coll, forcing, in, out, g.index(x0, y, z), x1 - x0);
+  };
   for_each_row(g, [&](int y, int z) {
-    for_each_x_range(g, [&](int x0, int x1) {
-      const double* in[kQ];
-      double* out[kQ];
-      read_pointers(pdf, s, x0, y, z, in);
-      write_pointers(pdf, s, x0, y, z, out);
-      collide_cells(coll, forcing, in, out, g.index(x0, y, z), x1 - x0);
-    });
+    if (!runs) return for_each_x_range(g, [&](int x0, int x1) { collide_range(x0, x1, y, z); });
+    const std::size_t row = std::size_t(y) + std::size_t(g.ny()) * std::size_t(z);
+    for (std::uint32_t k = runs->first[row]; k < runs->first[row + 1]; ++k)
+      collide_range(runs->run[k][0], runs->run[k][1], y, z);
   });
 }
 
