@@ -284,13 +284,13 @@ TEST_CASE("jet mill gas: a resumed run equals one that never stopped", "[scenari
 TEST_CASE("jet mill with particles: the feed delivers its mass into the chamber, which holds it",
           "[scenarios][jet_mill]") {
   // The default preset (CG-10 parcels fed at 0.1 kg/s, two-way coupled, 1 mm cells) for 0.3 ms
-  // (about 20 s under the sanitizers). The feed inserts every 0.1 ms what its rate asks by then:
+  // (13-16 s under the sanitizers in CI). The feed inserts every 0.1 ms what its rate asks by then:
   // the last insertion, at 0.2 ms, brings the total to 0.1 kg/s x 0.2 ms, past it by less than one
-  // parcel (a fill stops at the particle
-  // that reaches its mass; the largest parcel, r = 215 um, has 6.3e-8 kg), and no warning that the
-  // region is full. The chamber's walls (cylinder, floor, top plate) keep every centre inside it;
-  // through the vortex finder none has left yet (the feed region's nearest point is 3 mm outside
-  // the outlet's edge, and the feed moves along +y, away from it).
+  // parcel (a fill stops at the particle that reaches its mass; the largest parcel, r = 215 um, has
+  // 6.3e-8 kg), and no warning that the region is full. The chamber's walls (cylinder, floor, top
+  // plate) keep every centre inside it; through the vortex finder none has left yet (the feed
+  // region's nearest point is 3 mm outside the outlet's edge, and the feed moves along +y, away
+  // from it).
   const std::string out = tmpdir("jet_mill_feed");
   const auto r = cli("run jet_mill" + kFeedPreset + " --out " + out +
                      " --threads 2 --set fluid.dx=1e-3 --set run.end_time=3e-4"
