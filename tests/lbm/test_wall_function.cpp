@@ -179,8 +179,9 @@ TEST_CASE("a swirl in a staircase cylinder with the wall function conserves mass
 
 TEST_CASE("the wall function is bitwise the same at 1 and 2 threads over several summation blocks",
           "[lbm]") {
-  // Equivalence, not validation: a 66 x 64 floor has 4,224 wall cells, more than one block of
-  // deterministic_sum (4,096), so the cells are applied by both threads in parallel.
+  // Equivalence, not validation: a 66 x 64 floor has 4,224 wall cells, 16 summation blocks of
+  // 264 cells (wall_function.cpp), so both threads apply cells, most of them in flat runs
+  // (rows split where the periodic x edge wraps a link).
   auto run = [](int threads) {
     omp_set_num_threads(threads);
     LbmSettings s;
