@@ -10,6 +10,7 @@
 #include "helpers/dem_setup.hpp"
 #include "lbm/collision/trt.hpp"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -237,60 +238,122 @@ TEST_CASE("two-way exchange with walls, an inlet and an outlet balances the boun
   CHECK(drag > 0);
 }
 
+namespace {
+
+// Two-way settling of one particle or parcel in a periodic box; a uniform upward force on the gas
+// carries the particle's weight, so nothing outside acts and the gas far away stays at its
+// (small) mean velocity. The particle's own reaction drags the gas where it sits along with it,
+// so the drag law, which sees that local gas, lets it fall faster than the Schiller-Naumann speed
+// against the gas far away. In Stokes flow the force F, spread by a kernel of width sigma, moves
+// the gas at its centre by about 0.28 d / sigma of the single sphere's own terminal speed (force
+// coupling, Maxey & Patel 2001; kernel.hpp); a parcel of l^3 originals carries l^3 times an
+// original's force, so 0.28 l^3 d / sigma (d the original's diameter). The periodic images hinder
+// it by Hasimoto's 1.76 a / L (1959), a = l^3 d / 2 the radius whose Stokes drag is the parcel's.
+struct TwoWaySettling {
+  double re;       // the original's Reynolds number at terminal velocity
+  int l;           // size factor: the parcel holds l^3 originals, its diameter is l d
+  double d_cells;  // the parcel's diameter in cells
+  double nu_lat;   // lattice viscosity (sets the time step)
+  std::array<int, 3> cells;
+};
+
+struct SlipError {
+  double error;     // slip / v_t - 1 against the gas's mean velocity
+  double self;      // error + periodic-image hindrance
+  double estimate;  // 0.28 l^3 d / sigma
+};
+
+SlipError settle_two_way(const TwoWaySettling& c, double sigma_over_dp) {
+  const double dx = 50e-6, d_p = c.d_cells * dx, d = d_p / c.l;
+  const double dt = c.nu_lat * dx * dx / (kMuGas / kRhoGas);
+  const double v_t = c.re * kMuGas / (kRhoGas * d), sn = 1 + 0.15 * std::pow(c.re, 0.687);
+  // The parcel's response time is the original's: 100 gas steps.
+  const double tau_p = 100 * dt, g = v_t / tau_p * sn;
+  const double vol = kPi * d * d * d / 6;
+  const double rho_p = 3 * kPi * kMuGas * d * v_t * sn / (vol * g);
+  auto ds = test::settings(dt, Vec3(0, 0, -g));
+  ds.domain.periodic = {true, true, true};
+  ds.skin = d_p;
+  Rig rig(c.cells, dx, dt, lbm::BoxFaces::all_periodic(), ds, powder(rho_p));
+  CouplerSettings cs;
+  cs.drag = SchillerNaumann{};
+  cs.size_factor = c.l;
+  cs.kernel_width = sigma_over_dp * d_p;
+  rig.couple(cs);
+  rig.dem->add_particle(Vec3(c.cells[0] / 2.0, c.cells[1] / 2.0, c.cells[2] / 2.0) * dx,
+                        Vec3::Zero(), d_p / 2, 0);
+  const double m = rig.dem->particles().mass[0];
+  const double box = double(c.cells[0]) * c.cells[1] * c.cells[2] * dx * dx * dx;
+  rig.gas->set_body_force(Vec3(0, 0, rig.units.force_density_to_lattice(m * g / box)));
+  // 15 response times; the last 3 are averaged.
+  const int steps = 1500;
+  double slip = 0;
+  int samples = 0;
+  for (int k = 0; k < steps; ++k) {
+    rig.interval();
+    if (k >= steps - 300) {
+      const Vec3 u_mean = rig.coupler->gas_momentum() / (kRhoGas * box);
+      slip += u_mean.z() - rig.dem->particles().v[0].z();
+      ++samples;
+    }
+  }
+  slip /= samples;
+  const double l3 = double(c.l) * c.l * c.l;
+  const double error = slip / v_t - 1, image = 1.76 * l3 * (d / 2) / (c.cells[0] * dx);
+  const double estimate = 0.28 * l3 * d / (sigma_over_dp * d_p);
+  WARN("two-way settling, Re " << c.re << ", l = " << c.l << ", sigma/d_p = " << sigma_over_dp
+                               << ": slip " << slip << " m/s, " << 100 * error
+                               << " % above Schiller-Naumann; self-induced part "
+                               << 100 * (error + image) << " % (force coupling: " << 100 * estimate
+                               << " %)");
+  return {error, error + image, estimate};
+}
+
+}  // namespace
+
 TEST_CASE("two-way settling: the self-induced slip error falls as the kernel widens",
           "[coupling][physics][slow]") {
-  // A sphere settles in a periodic box; a uniform upward force on the gas carries the particle's
-  // weight, so nothing outside acts and the gas far away stays at its (small) mean velocity. The
-  // particle's own reaction drags the gas where it sits along with it, so the drag law, which
-  // sees that local gas, lets it fall faster than the Schiller-Naumann speed against the gas far
-  // away: by about 0.28 d / sigma (force coupling, Maxey & Patel 2001; kernel.hpp), less the
-  // periodic images' hindrance (Hasimoto 1959: about 1.76 (d/2) / L, 5.5 % in this box). No fixed
-  // tolerance holds for that error (the issue); the test asks that it falls as sigma / d grows,
-  // and that the self-induced part (error + image term) is 0.28 d / sigma within a factor 1.5.
-  const double d = 50e-6, dx = 50e-6, nu_lat = 1.0 / 6;  // tau = 1
-  const double dt = nu_lat * dx * dx / (kMuGas / kRhoGas);
-  const double re = 0.1, v_t = re * kMuGas / (kRhoGas * d);
-  const double tau_p = 100 * dt, g = v_t / tau_p * (1 + 0.15 * std::pow(re, 0.687));
-  const double vol = kPi * d * d * d / 6;
-  const double rho_p = 3 * kPi * kMuGas * d * v_t * (1 + 0.15 * std::pow(re, 0.687)) / (vol * g);
-  const int n = 16;
-  const double widths[] = {1, 2, 4};  // sigma / d
-  double previous = 1e300;
-  for (double w : widths) {
-    auto ds = test::settings(dt, Vec3(0, 0, -g));
-    ds.domain.periodic = {true, true, true};
-    ds.skin = d;
-    Rig rig({n, n, n}, dx, dt, lbm::BoxFaces::all_periodic(), ds, powder(rho_p));
-    CouplerSettings cs;
-    cs.drag = SchillerNaumann{};
-    cs.kernel_width = w * d;
-    rig.couple(cs);
-    rig.dem->add_particle(Vec3(n / 2.0, n / 2.0, n / 2.0) * dx, Vec3::Zero(), d / 2, 0);
-    const double m = rig.dem->particles().mass[0], box = std::pow(n * dx, 3);
-    rig.gas->set_body_force(Vec3(0, 0, rig.units.force_density_to_lattice(m * g / box)));
-    // 15 response times of the particle, and the box's viscous time L^2 / nu = 1536 steps.
-    const int steps = 1500;
-    double slip = 0;
-    int samples = 0;
-    for (int k = 0; k < steps; ++k) {
-      rig.interval();
-      if (k >= steps - 300) {
-        const Vec3 u_mean = rig.coupler->gas_momentum() / (kRhoGas * box);
-        slip += u_mean.z() - rig.dem->particles().v[0].z();
-        ++samples;
-      }
+  // No fixed tolerance holds for the error (the issue); the test asks that it falls as sigma / d
+  // grows, and in Stokes flow (Re 0.1) that the self-induced part (error + image term) is the
+  // force-coupling estimate within a factor 1.5, for an original and for parcels of l = 2 and 3
+  // (each parcel one cell across, so the original is 1/l of a cell: the coupling sees only the
+  // parcel). tau = 1.
+  const double widths[] = {1, 2, 4};  // sigma / d_p
+  for (int l = 1; l <= 3; ++l) {
+    const TwoWaySettling c{0.1, l, 1.0, 1.0 / 6, {16, 16, 16}};
+    double previous = 1e300;
+    // At l = 3 and sigma = d_p the gas at the parcel would move at 2.5 v_t (lattice 0.13, Mach
+    // 0.22): outside the weakly compressible range, so l = 3 starts at sigma = 2 d_p.
+    for (double w : widths) {
+      if (l == 3 && w < 2) continue;
+      CAPTURE(l, w);
+      const SlipError e = settle_two_way(c, w);
+      CHECK(std::abs(e.error) < previous);
+      CHECK(e.self / e.estimate > 1 / 1.5);
+      CHECK(e.self / e.estimate < 1.5);
+      previous = std::abs(e.error);
     }
-    slip /= samples;
-    const double error = slip / v_t - 1, image = 1.76 * (d / 2) / (n * dx);
-    const double self = error + image, estimate = 0.28 / w;
-    WARN("two-way settling, sigma/d = " << w << ": slip " << slip << " m/s, " << 100 * error
-                                        << " % above Schiller-Naumann; self-induced part "
-                                        << 100 * self << " % (force coupling: " << 100 * estimate
-                                        << " %)");
-    CHECK(std::abs(error) < previous);
-    CHECK(self / estimate > 1 / 1.5);
-    CHECK(self / estimate < 1.5);
-    previous = std::abs(error);
+  }
+}
+
+TEST_CASE("two-way settling at Re 10: the self-induced error falls as the kernel widens",
+          "[coupling][physics][slow]") {
+  // Re 10 at 0.05 lattice speed needs tau = 0.515 for a sphere of one cell. The Stokes estimate
+  // no longer holds: the particle outruns its own disturbance (the Oseen length nu / v_t is d /
+  // 10), so the gas it drags along is less than in Stokes flow. The test asks that the error falls
+  // as the kernel widens and stays below the Stokes estimate (Hasimoto's image term, a Stokes
+  // result, is left out here); it reports the figures (5.5, 1.6 and 0.16 % for sigma = 1, 2, 4 d).
+  // The box is 64 cells tall; the particle falls 75 cells in the run and so crosses its own wake
+  // through the periodic top during the averaging: a 24 x 24 x 96 box with a two-cell sphere gave
+  // 5.3, 1.1 and 0.01 %, so the wake adds at most half a point.
+  const TwoWaySettling c{10, 1, 1.0, 0.005, {16, 16, 64}};
+  double previous = 1e300;
+  for (double w : {1.0, 2.0, 4.0}) {
+    CAPTURE(w);
+    const SlipError e = settle_two_way(c, w);
+    CHECK(std::abs(e.error) < previous);
+    CHECK(e.error < e.estimate);
+    previous = std::abs(e.error);
   }
 }
 
