@@ -52,9 +52,9 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
-// mean, stderr_mean, std of each run folder in a compare-runs stats file.
-std::map<std::string, std::array<double, 3>> read_stats(const std::string& path) {
-  std::map<std::string, std::array<double, 3>> out;
+// mean, stderr_mean, std and stderr_std of each run folder in a compare-runs stats file.
+std::map<std::string, std::array<double, 4>> read_stats(const std::string& path) {
+  std::map<std::string, std::array<double, 4>> out;
   std::ifstream f(path);
   std::string line;
   std::getline(f, line);
@@ -62,8 +62,9 @@ std::map<std::string, std::array<double, 3>> read_stats(const std::string& path)
     std::vector<std::string> v;
     std::stringstream ls(line);
     for (std::string c; std::getline(ls, c, ',');) v.push_back(c);
-    if (v.size() < 11) continue;
-    out[fs::path(v[0]).filename().string()] = {std::stod(v[8]), std::stod(v[9]), std::stod(v[10])};
+    if (v.size() < 18) continue;
+    out[fs::path(v[0]).filename().string()] = {std::stod(v[8]), std::stod(v[9]), std::stod(v[10]),
+                                               std::stod(v[17])};
   }
   return out;
 }
@@ -109,7 +110,7 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string python = LBDEM_PYTHON;
   const std::array<std::string, 2> columns = {"bed_height_m", "pressure_drop_Pa"};
-  std::array<std::map<std::string, std::array<double, 3>>, 2> stats;
+  std::array<std::map<std::string, std::array<double, 4>>, 2> stats;
   for (std::size_t k = 0; k < columns.size() && !compared.empty(); ++k) {
     std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column " + columns[k] +
                       " --from " + fmt(from, "%.17g");
@@ -135,7 +136,8 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   std::ostringstream table;
   table << "case,size_factor,cohesion_rule,bond_number,parcels,parcels_across,parcels_high,"
            "window_from_s,simulated_s,bed_height_m,bed_height_err_m,bed_height_std_m,"
-           "pressure_drop_Pa,pressure_drop_err_Pa,pressure_drop_std_Pa,weight_per_area_Pa,"
+           "bed_height_std_err_m,pressure_drop_Pa,pressure_drop_err_Pa,pressure_drop_std_Pa,"
+           "pressure_drop_std_err_Pa,weight_per_area_Pa,"
            "wall_s_per_simulated_s,"
         << kSpeedupColumns << "\n";
   for (const Case* c : present) {
@@ -154,10 +156,10 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
     for (std::size_t k = 0; k < 2; ++k) {
       const auto it = stats[k].find(c->name);
       if (it == stats[k].end())
-        table << ",,,";
+        table << ",,,,";
       else
-        table << "," << fmt(it->second[0]) << "," << fmt(it->second[1]) << ","
-              << fmt(it->second[2]);
+        table << "," << fmt(it->second[0]) << "," << fmt(it->second[1]) << "," << fmt(it->second[2])
+              << "," << fmt(it->second[3]);
     }
     table << "," << fmt(mass * 9.81 * (1 - 1.2 / rho) / area) << ","
           << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""));

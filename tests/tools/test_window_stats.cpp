@@ -76,6 +76,37 @@ TEST_CASE("Automatic blocking recovers the correlated error of an AR(1) signal",
   CHECK(block_standard_error(x, 1) < 0.4 * expected);
 }
 
+TEST_CASE("Error of the fluctuation: white noise and AR(1) against closed forms", "[tools]") {
+  // The sample variance of n Gaussian samples with correlation phi^|j| has
+  // Var(s^2) -> 2 sigma^4 / n (1 + phi^2) / (1 - phi^2) (the squares are correlated as phi^2|j|),
+  // so se(s) = sigma / sqrt(2 n) sqrt((1 + phi^2) / (1 - phi^2)). Tolerance as for the mean's
+  // error: 4 relative standard deviations of a block estimate, plus half the blocks' deficit
+  // (computed with phi^2, the squares' correlation).
+  const std::size_t n = 1 << 18;
+  const double sigma = 1.5;
+  for (const double phi : {0.0, 0.8}) {
+    CAPTURE(phi);
+    const auto x = ar1(n, phi, sigma, 4242);
+    const double p2 = phi * phi;
+    const double expected = sigma / std::sqrt(2.0 * double(n)) * std::sqrt((1 + p2) / (1 - p2));
+    const BlockError e = fluctuation_error(x);
+    REQUIRE(e.plateau);
+    const double b = double(e.block);
+    const double deficit =
+        p2 > 0 ? 2 * p2 * (1 - std::pow(p2, b)) / (b * (1 - p2) * (1 - p2)) / ((1 + p2) / (1 - p2))
+               : 0.0;
+    CHECK(e.stderr_mean ==
+          Approx(expected).epsilon(4 * block_error_uncertainty(e.blocks) + 0.5 * deficit));
+  }
+  // The correlated case's error is larger than the white-noise formula by the factor above
+  // (2.13): ignoring the correlation would understate it.
+  const auto x = ar1(n, 0.8, sigma, 4242);
+  CHECK(fluctuation_error(x).stderr_mean > 1.5 * sigma / std::sqrt(2.0 * double(n)));
+  // A constant signal has no fluctuation and no error in it.
+  const std::vector<double> flat(100, 3.0);
+  CHECK(fluctuation_error(flat).stderr_mean == 0.0);
+}
+
 TEST_CASE("Fixed block length and too-short series", "[tools]") {
   const auto x = ar1(1000, 0.0, 1.0, 3);
   const BlockError f = fixed_block_error(x, 10);

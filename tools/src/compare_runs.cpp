@@ -36,6 +36,7 @@ struct Result {
   bool resampled = false;
   Moments m;
   BlockError err;
+  BlockError std_err;  // of the fluctuation (window_stats.hpp: fluctuation_error)
   Spectrum psd;
 };
 
@@ -86,9 +87,10 @@ Result analyse(const RunFolder& run, const std::string& label, const Options& o)
                  "interpolated at dt = %g s\n",
                  run.dir.c_str(), r.dt);
   r.m = moments(y);
-  r.err = o.block_length > 0
-              ? fixed_block_error(y, std::size_t(std::max(1.0, std::round(o.block_length / r.dt))))
-              : auto_block_error(y);
+  const std::size_t fixed =
+      o.block_length > 0 ? std::size_t(std::max(1.0, std::round(o.block_length / r.dt))) : 0;
+  r.err = fixed > 0 ? fixed_block_error(y, fixed) : auto_block_error(y);
+  r.std_err = fluctuation_error(y, fixed);
   r.psd = one_sided_psd(y, r.dt, o.segments);
   return r;
 }
@@ -100,7 +102,7 @@ void write_csvs(const std::string& prefix, const std::string& column,
   if (!s) throw ToolError("cannot write " + stats);
   if (!p) throw ToolError("cannot write " + spectra);
   s << "run_dir,label,size_factor,column,t_from_s,t_to_s,samples,dt_s,mean,stderr_mean,std,"
-       "block_length_s,blocks,plateau,peak_frequency_Hz,psd_integral,resampled\n";
+       "block_length_s,blocks,plateau,peak_frequency_Hz,psd_integral,resampled,stderr_std\n";
   p << "label,frequency_Hz,psd_per_Hz\n";
   s.precision(9);
   p.precision(9);
@@ -111,7 +113,7 @@ void write_csvs(const std::string& prefix, const std::string& column,
       << r.ta << ',' << r.tb << ',' << r.m.n << ',' << r.dt << ',' << r.m.mean << ','
       << r.err.stderr_mean << ',' << r.m.std << ',' << double(r.err.block) * r.dt << ','
       << r.err.blocks << ',' << (r.err.plateau ? 1 : 0) << ',' << peak_frequency(r.psd) << ','
-      << integral << ',' << (r.resampled ? 1 : 0) << '\n';
+      << integral << ',' << (r.resampled ? 1 : 0) << ',' << r.std_err.stderr_mean << '\n';
     for (std::size_t k = 0; k < r.psd.psd.size(); ++k)
       p << '"' << r.label << '"' << ',' << r.psd.frequency[k] << ',' << r.psd.psd[k] << '\n';
   }
@@ -119,18 +121,22 @@ void write_csvs(const std::string& prefix, const std::string& column,
 }
 
 void print_table(const std::string& column, const std::vector<Result>& res) {
-  std::printf("%s: mean ± standard error (block averages), fluctuation (standard deviation)\n",
-              column.c_str());
-  std::printf("%-12s %17s %8s %12s %12s %12s %9s %7s %10s %9s\n", "label", "window [s]", "samples",
-              "mean", "± stderr", "std", "block[s]", "blocks", "peak f[Hz]", "vs 1st");
+  std::printf(
+      "%s: mean ± standard error (block averages), fluctuation (standard deviation) ± its "
+      "standard error\n",
+      column.c_str());
+  std::printf("%-12s %17s %8s %12s %12s %12s %12s %9s %7s %10s %9s\n", "label", "window [s]",
+              "samples", "mean", "± stderr", "std", "± stderr", "block[s]", "blocks", "peak f[Hz]",
+              "vs 1st");
   for (const auto& r : res) {
     const auto& f = res.front();
     const double z = (r.m.mean - f.m.mean) / std::hypot(r.err.stderr_mean, f.err.stderr_mean);
     char window[40];
     std::snprintf(window, sizeof window, "%.4g-%.4g", r.ta, r.tb);
-    std::printf("%-12s %17s %8zu %12.5g %12.3g %12.5g %9.3g %7zu %10.4g %8.2fσ%s\n",
+    std::printf("%-12s %17s %8zu %12.5g %12.3g %12.5g %12.3g %9.3g %7zu %10.4g %8.2fσ%s\n",
                 r.label.c_str(), window, r.m.n, r.m.mean, r.err.stderr_mean, r.m.std,
-                double(r.err.block) * r.dt, r.err.blocks, peak_frequency(r.psd), &r == &f ? 0.0 : z,
+                r.std_err.stderr_mean, double(r.err.block) * r.dt, r.err.blocks,
+                peak_frequency(r.psd), &r == &f ? 0.0 : z,
                 r.err.plateau ? "" : "  (no plateau: error may be low)");
   }
 }
@@ -148,7 +154,9 @@ int main(int argc, char** argv) {
       "plateau, and the largest of the three errors is reported. Without a plateau the longest "
       "length with 8 blocks is used and the table says so (the error may then be low: lengthen "
       "the window). --block-length fixes it instead. 'vs 1st' is the difference of each mean from "
-      "the first run's in combined standard errors.\n"
+      "the first run's in combined standard errors. The fluctuation's standard error is the same "
+      "blocking applied to the squared deviations (the error of the variance), halved and "
+      "divided by the standard deviation (delta method).\n"
       "Spectrum: FFTW r2c of the linearly detrended, periodic-Hann-windowed signal, S = 2 dt "
       "|X|^2 / sum(w^2) [unit^2/Hz] (sum S df = windowed variance); --segments K averages K "
       "half-overlapping segments (Welch).\n"

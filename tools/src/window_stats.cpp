@@ -79,4 +79,15 @@ BlockError auto_block_error(std::span<const double> x) {
   return {last.se, last.block, last.blocks, false};
 }
 
+BlockError fluctuation_error(std::span<const double> x, std::size_t block) {
+  const Moments m = moments(x);
+  if (m.n < 2) return {kNaN, 1, 0, false};
+  const double c = double(m.n) / double(m.n - 1);
+  std::vector<double> y(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) y[k] = c * (x[k] - m.mean) * (x[k] - m.mean);
+  BlockError e = block > 0 ? fixed_block_error(y, block) : auto_block_error(y);
+  e.stderr_mean = m.std > 0 ? e.stderr_mean / (2 * m.std) : 0.0;  // a constant signal: exact
+  return e;
+}
+
 }  // namespace lbdem::tools

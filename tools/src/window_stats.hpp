@@ -48,4 +48,11 @@ BlockError auto_block_error(std::span<const double> x);
 /// Fixed block length (samples), e.g. from --block-length.
 BlockError fixed_block_error(std::span<const double> x, std::size_t block);
 
+/// Standard error of the fluctuation (the sample standard deviation s), in stderr_mean: s^2 is the
+/// mean of y_k = n / (n - 1) (x_k - mean)^2, so the blocking above applied to y gives the error of
+/// s^2 with the samples' correlation accounted for, and the delta method that of s,
+/// se(s) = se(s^2) / (2 s). `block` 0: automatic, else a fixed block length [samples]. For white
+/// Gaussian noise it tends to s / sqrt(2 (n - 1)).
+BlockError fluctuation_error(std::span<const double> x, std::size_t block = 0);
+
 }  // namespace lbdem::tools
