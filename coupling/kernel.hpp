@@ -131,9 +131,10 @@ class ParticleKernel {
   void interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const;
 
   /// Trilinear interpolation over the gas corners of each particle's cell (weights renormalised
-  /// over them), without the filter: for fields that are already smooth on the kernel's scale
-  /// (eps, grad p, the gas velocity a drag coefficient is evaluated at), where the exchange does
-  /// not need the adjoint of deposit(). Exact for constant and linear fields away from solids.
+  /// over them), without the filter: for a value needed only locally, where the exchange does not
+  /// need the adjoint of deposit() (the gas velocity a drag coefficient is evaluated at; eps and
+  /// grad p go through interpolate(), coupler.cpp). Exact for constant and linear fields away
+  /// from solids.
   void interpolate_local(std::span<const double> field, std::vector<double>& out) const;
   void interpolate_local(std::span<const Vec3> field, std::vector<Vec3>& out) const;
 
