@@ -14,6 +14,7 @@ run time less T_SPIN (the gas spin-up). Exit 0 on success, 2 on missing input.
 """
 import argparse
 import csv
+import gzip
 import os
 import sys
 
@@ -32,11 +33,14 @@ def fail(msg):
 def columns(path):
     """The CSV's columns as arrays; {} with a warning if the file is missing (that case's panel
     stays empty: one case without output must not cost the others their figures)."""
+    if not os.path.isfile(path) and os.path.isfile(path + ".gz"):
+        path += ".gz"  # results/ keeps the large maps gzipped
     if not os.path.isfile(path):
         print(f"jet_mill_figures: warning: no {path} (run lbdem-jet-mill-maps, or ./lbdem study "
               "jet_mill)", file=sys.stderr)
         return {}
-    with open(path, newline="", encoding="utf-8") as f:
+    opener = gzip.open if path.endswith(".gz") else open
+    with opener(path, "rt", newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     if not rows:
         return {}
@@ -125,7 +129,7 @@ def main():
     im = None
     for ax, c in zip(axes, cases):
         path = os.path.join(root, c, "mill_gas_midplane.csv")
-        if os.path.isfile(path):
+        if os.path.isfile(path) or os.path.isfile(path + ".gz"):
             g = columns(path)
             ext, arr = grid(g["x_m"], g["y_m"], np.minimum(g["speed_m_per_s"], 120))
             im = ax.imshow(arr, origin="lower", extent=ext, vmin=0, vmax=120, cmap="jet")
@@ -140,7 +144,7 @@ def main():
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     for i, c in enumerate(cases):
         path = os.path.join(root, c, "mill_gas_profile.csv")
-        if os.path.isfile(path):
+        if os.path.isfile(path) or os.path.isfile(path + ".gz"):
             g = columns(path)
             ax1.plot(1e3 * g["radius_m"], g["u_theta_m_per_s"], color=f"C{i}", label=c)
             ax2.plot(1e3 * g["radius_m"], g["u_r_m_per_s"], color=f"C{i}", label=c)
