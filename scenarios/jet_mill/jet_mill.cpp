@@ -273,8 +273,10 @@ void JetMillScenario::mill_banner(Log& log) const {
   if (g.nozzles.empty()) return;
   const Nozzle& q = g.nozzles.front();
   const double nu = f.nu();
+  const auto grinding = double(
+      std::count_if(g.nozzles.begin(), g.nozzles.end(), [](const Nozzle& n) { return !n.feed; }));
   log.derived(
-      "nozzles", double(g.nozzles.size()), "",
+      "nozzles", grinding, "",
       "(diameter " + to_text(q.diameter) + " m = " + to_text(q.diameter / f.dx) + " cells)");
   if (q.supply_pressure > 0)
     log.derived("nozzle supply pressure p0", q.supply_pressure, "Pa",
@@ -285,7 +287,7 @@ void JetMillScenario::mill_banner(Log& log) const {
                   to_text(f.units().velocity_to_lattice(q.speed) * std::sqrt(3.0)) + ")");
   log.derived("jet Reynolds number U d / nu", q.speed * q.diameter / nu, "");
   log.derived("mass flow per nozzle", q.mass_flow, "kg/s",
-              "(total " + to_text(q.mass_flow * double(g.nozzles.size())) + " kg/s)");
+              "(total " + to_text(q.mass_flow * grinding) + " kg/s)");
   log.derived("momentum flux per nozzle J", q.momentum_flux(), "N", "(mdot U)");
   log.derived("notional source radius r_s", q.source_radius, "m",
               "(" + to_text(q.source_radius / f.dx) + " cells; speed at r_s about " +
@@ -294,6 +296,14 @@ void JetMillScenario::mill_banner(Log& log) const {
                   " m/s)");
   log.derived("source cells per nozzle", double(sources_.cells_per_nozzle.front()), "",
               "(mass and momentum exact on any grid: jet_mill_geometry.hpp)");
+  const Nozzle& feed = g.nozzles.back();
+  if (!feed.feed) return;
+  const Vec3 at = feed.exit - g.axis;
+  log.derived("feed inlet gas", feed.mass_flow, "kg/s",
+              "(at " + to_text(std::atan2(at.y(), at.x()) * 180 / kPi) + " deg, diameter " +
+                  to_text(feed.diameter) + " m, " + to_text(feed.speed) + " m/s, J " +
+                  to_text(feed.momentum_flux()) + " N, source radius " +
+                  to_text(feed.source_radius / f.dx) + " cells)");
 }
 
 }  // namespace lbdem::scenarios

@@ -27,6 +27,108 @@ double start_offset(const Nozzle& q, const Vec3& axis, double dx) {
   const double cos_a = std::sqrt(std::max(0.0, 1 - sin_a * sin_a));
   return (q.source_radius * cos_a + 1.5 * dx) / std::max(sin_a, 1e-3);
 }
+
+// A nozzle on the chamber wall at `at_deg` (counter-clockwise from +x) from its config section:
+// angle to the wall tangent, axis height, diameter, and the jet from a supply pressure
+// (nozzle_flow.hpp: a choked nozzle's mass flow and the speed that carries its momentum flux) or
+// given as exit speed and mass flow.
+Nozzle read_nozzle(const Config& n, const JetMillGeometry& g, const FluidConfig& f, double at_deg) {
+  const double angle =
+      n.get("angle_deg", 40.0,
+            Range::closed(5, 90, "give the angle to the wall tangent in degrees, 5 - 90"));
+  const double z = n.get("height", 0.5 * g.height,
+                         Range::closed(0, g.height, "give the axis height above the floor in m"));
+  const double d = n.require("diameter", Range::positive("give the nozzle diameter in m"));
+  if (d >= g.height)
+    throw InputError(n.path("diameter"), to_text(d), "the nozzle is as tall as the chamber",
+                     "give a diameter below the chamber height " + to_text(g.height) + " m");
+  double u = 0, mdot = 0, p0 = 0;
+  if (!n.has("supply_pressure"))
+    for (const char* key : {"ambient_pressure", "supply_temperature"})
+      if (n.has(key))
+        throw InputError(n.path(key), "", "it belongs to a nozzle fed from a supply pressure",
+                         "give " + n.path("supply_pressure") +
+                             " (in place of speed and mass_flow), or remove " + std::string(key));
+  if (n.has("supply_pressure")) {
+    for (const char* key : {"speed", "mass_flow"})
+      if (n.has(key))
+        throw InputError(n.path(key), "given with supply_pressure",
+                         "the supply pressure sets the jet's speed and mass flow",
+                         "give either supply_pressure or speed (and mass_flow), not both");
+    const double pa = n.get("ambient_pressure", 101325.0,
+                            Range::positive("give the chamber's absolute pressure in Pa"));
+    p0 = n.require("supply_pressure",
+                   Range{pa, Range::kInf, true, false,
+                         "give the absolute supply pressure in Pa, above ambient_pressure"});
+    const double t0 = n.get("supply_temperature", 293.15,
+                            Range::closed(150, 1000, "give the supply temperature in K"));
+    const NozzleFlow nf = nozzle_flow(p0, t0, pa, kPi * d * d / 4);
+    u = nf.speed;
+    mdot = nf.mass_flow;
+  } else {
+    u = n.require("speed", Range::positive("give the jet exit speed in m/s"));
+    mdot = n.get("mass_flow", f.density * u * kPi * d * d / 4,
+                 Range::positive("give the mass flow per nozzle in kg/s"));
+  }
+  const double th = at_deg * kPi / 180.0;
+  const Vec3 radial(std::cos(th), std::sin(th), 0.0);
+  const Vec3 tangent(-std::sin(th), std::cos(th), 0.0);  // counter-clockwise from +z
+  Nozzle q;
+  q.exit = g.axis + g.radius * radial + z * Vec3::UnitZ();
+  q.dir = std::cos(angle * kPi / 180.0) * tangent - std::sin(angle * kPi / 180.0) * radial;
+  q.diameter = d;
+  q.speed = u;
+  q.mass_flow = mdot;
+  q.supply_pressure = p0;
+  const double u_cap = f.max_speed;
+  q.source_radius =
+      std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
+  return q;
+}
+
+// The notional source must lie in the gas, clear of every wall by 1.5 cells (on the wall's cells
+// bounce-back takes a large part of its momentum; jet_mill_geometry.hpp). Errors name the keys of
+// the nozzle's section `n`.
+void check_source_fits(const Config& n, const Nozzle& q, const JetMillGeometry& g,
+                       const FluidConfig& f, const Config& section) {
+  const double rs = q.source_radius, clear = 1.5 * f.dx;
+  const double z = q.exit.z() - g.axis.z();
+  if (z < rs + clear || z > g.height - rs - clear)
+    throw InputError(n.path("height"), to_text(z),
+                     "the notional source (radius " + to_text(rs) +
+                         " m) comes within 1.5 cells of the floor or roof",
+                     "give a height in [" + to_text(rs + clear) + ", " +
+                         to_text(g.height - rs - clear) +
+                         "] m, a smaller diameter, or a finer fluid.dx");
+  Vec3 radial = q.exit - g.axis;
+  radial.z() = 0;
+  const double sin_a = std::abs(q.dir.dot(radial.normalized()));
+  const double chord = 2 * g.radius * sin_a;
+  if (start_offset(q, g.axis, f.dx) + 2 * rs > chord - clear)
+    throw InputError(
+        n.path("angle_deg"), to_text(n.get("angle_deg", 40.0)),
+        "the notional source does not fit on the chord the jet crosses (" + to_text(chord) + " m)",
+        "give a larger angle to the wall tangent, a smaller diameter, or a finer "
+        "fluid.dx");
+  if (g.classifier_height > 0) {
+    // The sources must clear the ring as they clear the other walls (1.5 cells), where the ring
+    // reaches down to the sources' height: sampled along the source's axis.
+    const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
+    const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
+    const double s0 = start_offset(q, g.axis, f.dx);
+    const bool reaches = z + rs + clear > g.height - g.classifier_height;
+    for (int k = 0; k <= 16 && reaches; ++k) {
+      const Vec3 p = q.exit + (s0 + 2 * rs * k / 16.0) * q.dir;
+      const double r = std::hypot(p.x() - g.axis.x(), p.y() - g.axis.y());
+      if (r > r_in - rs - clear && r < r_out + rs + clear)
+        throw InputError(section.section("classifier").path("radius"), to_text(g.classifier_radius),
+                         std::string(q.feed ? "the feed's" : "the jets'") +
+                             " notional source comes within 1.5 cells of the classifier ring",
+                         "move the ring inwards, shorten it (classifier.height) or lower the "
+                         "nozzles");
+    }
+  }
+}
 }  // namespace
 
 bool JetMillGeometry::in_classifier(const Vec3& x) const {
@@ -88,97 +190,23 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
   }
   const Config n = section.section("nozzles");
   const int count = int(n.get_int("count", 4, Range::closed(1, 64)));
-  const double angle =
-      n.get("angle_deg", 40.0,
-            Range::closed(5, 90, "give the angle to the wall tangent in degrees, 5 - 90"));
   const double first = n.get("first_deg", 0.0, Range::closed(-360, 360));
-  const double z = n.get("height", 0.5 * g.height,
-                         Range::closed(0, g.height, "give the axis height above the floor in m"));
-  const double d = n.require("diameter", Range::positive("give the nozzle diameter in m"));
-  if (d >= g.height)
-    throw InputError(n.path("diameter"), to_text(d), "the nozzle is as tall as the chamber",
-                     "give a diameter below the chamber height " + to_text(g.height) + " m");
-  // The jet: from the supply pressure (nozzle_flow.hpp: a choked nozzle's mass flow and the speed
-  // that carries its momentum flux), or given directly as exit speed and mass flow.
-  double u = 0, mdot = 0, p0 = 0;
-  if (!n.has("supply_pressure"))
-    for (const char* key : {"ambient_pressure", "supply_temperature"})
-      if (n.has(key))
-        throw InputError(n.path(key), "", "it belongs to a nozzle fed from a supply pressure",
-                         "give jet_mill.nozzles.supply_pressure (in place of speed and "
-                         "mass_flow), or remove " +
-                             std::string(key));
-  if (n.has("supply_pressure")) {
-    for (const char* key : {"speed", "mass_flow"})
-      if (n.has(key))
-        throw InputError(n.path(key), "given with supply_pressure",
-                         "the supply pressure sets the jet's speed and mass flow",
-                         "give either supply_pressure or speed (and mass_flow), not both");
-    const double pa = n.get("ambient_pressure", 101325.0,
-                            Range::positive("give the chamber's absolute pressure in Pa"));
-    p0 = n.require("supply_pressure",
-                   Range{pa, Range::kInf, true, false,
-                         "give the absolute supply pressure in Pa, above ambient_pressure"});
-    const double t0 = n.get("supply_temperature", 293.15,
-                            Range::closed(150, 1000, "give the supply temperature in K"));
-    const NozzleFlow nf = nozzle_flow(p0, t0, pa, kPi * d * d / 4);
-    u = nf.speed;
-    mdot = nf.mass_flow;
-  } else {
-    u = n.require("speed", Range::positive("give the jet exit speed in m/s"));
-    mdot = n.get("mass_flow", f.density * u * kPi * d * d / 4,
-                 Range::positive("give the mass flow per nozzle in kg/s"));
-  }
-  const double u_cap = f.max_speed;
   for (int k = 0; k < count; ++k) {
-    const double th = (first + 360.0 * k / count) * kPi / 180.0;
-    const Vec3 radial(std::cos(th), std::sin(th), 0.0);
-    const Vec3 tangent(-std::sin(th), std::cos(th), 0.0);  // counter-clockwise from +z
-    Nozzle q;
-    q.exit = g.axis + g.radius * radial + z * Vec3::UnitZ();
-    q.dir = std::cos(angle * kPi / 180.0) * tangent - std::sin(angle * kPi / 180.0) * radial;
-    q.diameter = d;
-    q.speed = u;
-    q.mass_flow = mdot;
-    q.supply_pressure = p0;
-    q.source_radius =
-        std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
+    const Nozzle q = read_nozzle(n, g, f, first + 360.0 * k / count);
     g.nozzles.push_back(q);
+    if (k == 0) check_source_fits(n, q, g, f, section);
   }
-  // The notional source must lie in the gas, clear of every wall by 1.5 cells (on the wall's
-  // cells bounce-back takes a large part of its momentum; jet_mill_geometry.hpp).
-  const Nozzle& q = g.nozzles.front();
-  const double rs = q.source_radius, clear = 1.5 * f.dx;
-  if (z < rs + clear || z > g.height - rs - clear)
-    throw InputError(n.path("height"), to_text(z),
-                     "the jets' notional source (radius " + to_text(rs) +
-                         " m) comes within 1.5 cells of the floor or roof",
-                     "give a height in [" + to_text(rs + clear) + ", " +
-                         to_text(g.height - rs - clear) +
-                         "] m, a smaller diameter, or a finer fluid.dx");
-  const double chord = 2 * g.radius * std::sin(angle * kPi / 180.0);
-  if (start_offset(q, g.axis, f.dx) + 2 * rs > chord - clear)
-    throw InputError(n.path("angle_deg"), to_text(angle),
-                     "the jets' notional source does not fit on the chord the jet crosses (" +
-                         to_text(chord) + " m)",
-                     "give a larger angle to the wall tangent, a smaller diameter, or a finer "
-                     "fluid.dx");
-  if (g.classifier_height > 0) {
-    // The jets' sources must clear the ring as they clear the other walls (1.5 cells), where
-    // the ring reaches down to the sources' height: sampled along each source's axis.
-    const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
-    const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
-    const double s0 = start_offset(q, g.axis, f.dx);
-    const bool reaches = z + rs + clear > g.height - g.classifier_height;
-    for (int k = 0; k <= 16 && reaches; ++k) {
-      const Vec3 p = q.exit + (s0 + 2 * rs * k / 16.0) * q.dir;
-      const double r = std::hypot(p.x() - g.axis.x(), p.y() - g.axis.y());
-      if (r > r_in - rs - clear && r < r_out + rs + clear)
-        throw InputError(section.section("classifier").path("radius"), to_text(g.classifier_radius),
-                         "the jets' notional sources come within 1.5 cells of the classifier ring",
-                         "move the ring inwards, shorten it (classifier.height) or lower the "
-                         "nozzles");
-    }
+  if (section.has("feed")) {
+    // The feed injector's gas: one more nozzle on the wall, its own position, angle and flow.
+    const Config c = section.section("feed");
+    const double at = c.get("position_deg", first + 180.0 / count,
+                            Range::closed(-360, 360,
+                                          "give where on the wall the feed enters, in degrees "
+                                          "counter-clockwise from +x"));
+    Nozzle q = read_nozzle(c, g, f, at);
+    q.feed = true;
+    check_source_fits(c, q, g, f, section);
+    g.nozzles.push_back(q);
   }
   return g;
 }

@@ -46,6 +46,7 @@ struct Nozzle {
   double mass_flow = 0;        // mdot [kg/s]
   double supply_pressure = 0;  // p0 [Pa] when the jet comes from a supply pressure, else 0
   double source_radius = 0;    // notional source radius r_s [m]
+  bool feed = false;           // the feed injector's gas (jet_mill.feed), not a grinding jet
   double momentum_flux() const { return mass_flow * speed; }  // J [N]
 };
 

@@ -217,8 +217,9 @@ int run_jet_mill_study(const StudyOptions& opt) {
                       " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g") + " --out " +
                       quoted(dir + "/mill");
     for (const Nozzle& q : g.nozzles)
-      cmd += " --jet " + fmt(q.exit.x(), "%.9g") + "," + fmt(q.exit.y(), "%.9g") + "," +
-             fmt(q.dir.x(), "%.9g") + "," + fmt(q.dir.y(), "%.9g");
+      if (!q.feed)
+        cmd += " --jet " + fmt(q.exit.x(), "%.9g") + "," + fmt(q.exit.y(), "%.9g") + "," +
+               fmt(q.dir.x(), "%.9g") + "," + fmt(q.dir.y(), "%.9g");
     system_ok(cmd, "lbdem-jet-mill-maps");
   }
   std::string runs;

@@ -92,6 +92,43 @@ TEST_CASE("jet mill: the nozzles' sources hold mdot, J and the jets' torque on a
   }
 }
 
+TEST_CASE("jet mill: the feed inlet adds its own mass flow and momentum, apart from the jets",
+          "[scenarios][jet_mill]") {
+  // A 1.5 mm feed injector at 20 m/s, halfway between the first two nozzles (45 deg), at 30
+  // degrees to the wall tangent: the four jets' forces cancel (90 degrees apart), so the sources'
+  // net force is the feed's J along its axis, and their mass the jets' plus the feed's
+  // rho U pi d^2 / 4; both exact to round-off, as for the jets (sums of a few hundred terms).
+  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string cfg = text.str();
+  cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = 1e-3");
+  cfg += "\n[jet_mill.feed]\ndiameter = 1.5e-3\nspeed = 20.0\nangle_deg = 30.0\n";
+  lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
+  const auto& g = mill.geometry();
+  REQUIRE(g.nozzles.size() == 5);
+  const auto& feed = g.nozzles.back();
+  CHECK(feed.feed);
+  CHECK(!g.nozzles.front().feed);
+  const double feed_mdot = kRho * 20.0 * kPi * 1.5e-3 * 1.5e-3 / 4, feed_j = feed_mdot * 20.0;
+  // At 45 degrees on the wall, pointing 30 degrees inwards from the counter-clockwise tangent.
+  const double th = kPi / 4, a = kPi / 6;
+  const lbdem::Vec3 dir = std::cos(a) * lbdem::Vec3(-std::sin(th), std::cos(th), 0) -
+                          std::sin(a) * lbdem::Vec3(std::cos(th), std::sin(th), 0);
+  CHECK((feed.dir - dir).norm() < 1e-14);
+  CHECK((feed.exit - g.axis - lbdem::Vec3(kRadius * std::cos(th), kRadius * std::sin(th), 2.5e-3))
+            .norm() < 1e-15);
+  const auto& f = mill.box().fluid();
+  const auto src = lbdem::scenarios::jet_sources(*mill.box().gas(), f, g);
+  double mass = 0;
+  for (const auto& m : src.mass) mass += m.mass;
+  const double cell = f.dx * f.dx * f.dx, to_si = cell / f.units().force_density_to_lattice(1.0);
+  lbdem::Vec3 force = lbdem::Vec3::Zero();
+  for (const auto& fc : src.force) force += to_si * fc;
+  CHECK(mass * kRho * cell / f.dt == Approx(4 * kMassFlow + feed_mdot).epsilon(1e-12));
+  CHECK((force - feed_j * dir).norm() < 1e-10 * 4 * kMassFlow * kU);
+}
+
 TEST_CASE("jet mill: a supply pressure feeds the jets a choked nozzle's mass flow and thrust",
           "[scenarios][jet_mill]") {
   // 5 bar absolute through the 0.8 mm nozzles: 0.0404 A p0 / sqrt(T0) = 0.593 g/s each, and
