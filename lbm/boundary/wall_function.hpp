@@ -88,16 +88,17 @@ struct WallFunctionCells {
   // The cell's centre [lattice coordinates]. Its links act at x + c_q / 2, and c_q x c_q = 0, so
   // their torque is (x - origin) x F_cell: one cross product per cell instead of one per link.
   std::vector<Vec3> centre;
-  // Work units in storage order: cells unit_first[u] .. unit_first[u + 1] - 1 (size + 1 entries),
+  // Work units in storage order: cells unit_first[u] .. unit_first[u + 1] - 1 (units + 1 entries),
   // either one cell or, where unit_flat[u], a run of flat-face cells: storage neighbours with the
   // five links of one axis-aligned face, in the same order and to the same offsets. There n is
   // the face's axis, A = 1 and M_t / rho_w = I / 3 exactly, and each link's slots are consecutive
   // along the run, so the kernel is one branch-free loop (80 % of the jet mill's wall cells are
-  // floor and top-plate cells in runs of about 26).
+  // floor and top-plate cells in runs of about 22).
   std::vector<std::uint32_t> unit_first;
   std::vector<std::uint8_t> unit_flat;
-  // Blocks of units of about kWallCellBlock cells each (block_first: size + 1 entries), fixed at
-  // set-up: the load is summed block by block, bitwise the same at any thread count.
+  // Blocks of units of about kWallCellBlock cells each (block_first), fixed at
+  // set-up (blocks + 1 entries): the load is summed block by block, bitwise the same at any
+  // thread count.
   std::vector<std::uint32_t> block_first;
   std::size_t size() const { return cell.size(); }
 };

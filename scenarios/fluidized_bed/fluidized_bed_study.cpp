@@ -150,7 +150,7 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
     const double area = hi[0] * hi[1];
     const auto [wall, timed] = read_timing(dir);
     table << c->name << "," << c->l << "," << c->cohesion << "," << c->bond << ","
-          << fmt(std::round(parcels), "%.0f") << "," << fmt(hi[0] / d) << ","
+          << fmt(std::ceil(parcels - 1e-9), "%.0f") << "," << fmt(hi[0] / d) << ","
           << fmt(mass / (rho * 0.6 * area) / d) << "," << fmt(from) << ","
           << fmt(last_time(dir + "/timeseries.csv"));
     for (std::size_t k = 0; k < 2; ++k) {

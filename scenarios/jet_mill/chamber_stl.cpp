@@ -112,7 +112,9 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
     return x >= 0 && y >= 0 && z >= 0 && x < grid.nx() && y < grid.ny() && z < grid.nz() &&
            gas.flags().fluid(grid.index(x, y, z));
   };
-  const std::string nozzle = "nozzle " + std::to_string(k + 1);
+  const std::string nozzle = q.feed ? "the feed" : "nozzle " + std::to_string(k + 1);
+  const std::string move = q.feed ? "move the feed (jet_mill.feed.position_deg, height)"
+                                  : "move the nozzles (jet_mill.nozzles.first_deg, height)";
   int lo[3], hi[3];
   for (int a = 0; a < 3; ++a) {
     const double b0 = q.exit[a] + s0 * q.dir[a], b1 = b0 + len * q.dir[a];
@@ -125,15 +127,14 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
         const Vec3 r = f.cell_centre(x, y, z) - q.exit;
         const double s = r.dot(q.dir);
         if (s < s0 || s > s0 + len || (r - s * q.dir).norm() > reach || gas_at(x, y, z)) continue;
-        throw InputError(
-            g.chamber_key, nozzle,
-            "the STL's wall (or floor or roof) comes within 1.5 cells of the jet's "
-            "notional source (radius " +
-                to_text(rs) + " m), at the cell centred at " + to_text(r.x() + q.exit.x()) + ", " +
-                to_text(r.y() + q.exit.y()) + ", " + to_text(r.z() + q.exit.z()) + " m",
-            "make the STL's wall meet the nozzles' circle of radius " + to_text(g.radius) +
-                " m (half the box's width) there, or move the nozzles "
-                "(jet_mill.nozzles.first_deg, height)");
+        throw InputError(g.chamber_key, nozzle,
+                         "the STL's wall (or floor or roof) comes within 1.5 cells of the jet's "
+                         "notional source (radius " +
+                             to_text(rs) + " m), at the cell centred at " +
+                             to_text(r.x() + q.exit.x()) + ", " + to_text(r.y() + q.exit.y()) +
+                             ", " + to_text(r.z() + q.exit.z()) + " m",
+                         "make the STL's wall meet the nozzles' circle of radius " +
+                             to_text(g.radius) + " m (half the box's width) there, or " + move);
       }
   Vec3 out = q.exit - g.axis;
   out.z() = 0;
@@ -142,8 +143,7 @@ void check_source_in_stl(const lbm::LbmSolver& gas, const FluidConfig& f, const 
     throw InputError(g.chamber_key, nozzle,
                      "the STL's wall at the nozzle lies outside the nozzles' circle of radius " +
                          to_text(g.radius) + " m (gas 0.75 cells behind the exit)",
-                     "make the STL's wall meet the nozzles' circle there, or move the nozzles "
-                     "(jet_mill.nozzles.first_deg)");
+                     "make the STL's wall meet the nozzles' circle there, or " + move);
 }
 
 bool triangle_meets_box(const Triangle& t, const Vec3& lo, const Vec3& hi) {

@@ -6,7 +6,8 @@
 // "les"), [jet_mill] the chamber and nozzles. Particles come from [inflow] (the feed) only; their
 // walls are the chamber's (cylinder, top plate with the outlet's hole) and the box's floor, and
 // [coupling] works as in the box. timeseries.csv adds
-//   jet_mass_flow_kg_s                 the nozzles' summed mass flow (exact, the sources),
+//   jet_mass_flow_kg_s                 the nozzles' summed mass flow, the feed's included
+//                                      (exact, the sources),
 //   outlet_mass_flow_kg_s              gas leaving through the vortex finder,
 //   gas_tangential_speed_mid_m_s       mean u_theta over the cells at mid-radius (|r - R/2| < dx),
 //   gas_radial_speed_mid_m_s           mean u_r there (negative: inwards),

@@ -94,22 +94,23 @@ void check_source_fits(const Config& n, const Nozzle& q, const JetMillGeometry& 
   const double rs = q.source_radius, clear = 1.5 * f.dx;
   const double z = q.exit.z() - g.axis.z();
   if (z < rs + clear || z > g.height - rs - clear)
-    throw InputError(n.path("height"), to_text(z),
-                     "the notional source (radius " + to_text(rs) +
-                         " m) comes within 1.5 cells of the floor or roof",
-                     "give a height in [" + to_text(rs + clear) + ", " +
-                         to_text(g.height - rs - clear) +
-                         "] m, a smaller diameter, or a finer fluid.dx");
+    throw InputError(
+        n.path("height"), to_text(z),
+        std::string(q.feed ? "the feed's" : "the jets'") + " notional source (radius " +
+            to_text(rs) + " m) comes within 1.5 cells of the floor or roof",
+        "give a height in [" + to_text(rs + clear) + ", " + to_text(g.height - rs - clear) +
+            "] m, a smaller diameter, or a finer fluid.dx");
   Vec3 radial = q.exit - g.axis;
   radial.z() = 0;
   const double sin_a = std::abs(q.dir.dot(radial.normalized()));
   const double chord = 2 * g.radius * sin_a;
   if (start_offset(q, g.axis, f.dx) + 2 * rs > chord - clear)
-    throw InputError(
-        n.path("angle_deg"), to_text(n.get("angle_deg", 40.0)),
-        "the notional source does not fit on the chord the jet crosses (" + to_text(chord) + " m)",
-        "give a larger angle to the wall tangent, a smaller diameter, or a finer "
-        "fluid.dx");
+    throw InputError(n.path("angle_deg"), to_text(n.get("angle_deg", 40.0)),
+                     std::string(q.feed ? "the feed's" : "the jets'") +
+                         " notional source does not fit on the chord the jet crosses (" +
+                         to_text(chord) + " m)",
+                     "give a larger angle to the wall tangent, a smaller diameter, or a finer "
+                     "fluid.dx");
   if (g.classifier_height > 0) {
     // The sources must clear the ring as they clear the other walls (1.5 cells), where the ring
     // reaches down to the sources' height: sampled along the source's axis.
@@ -319,9 +320,11 @@ JetSources jet_sources(const lbm::LbmSolver& gas, const FluidConfig& f, const Je
     out.gas_fraction.push_back(double(samples_gas) / double(std::max(samples_all, 1L)));
     if (g.meshed()) check_source_in_stl(gas, f, g, k, s0);
     if (total <= 0)
-      throw InputError("jet_mill.nozzles", "nozzle " + std::to_string(k + 1),
+      throw InputError(q.feed ? "jet_mill.feed" : "jet_mill.nozzles",
+                       q.feed ? "the feed" : "nozzle " + std::to_string(k + 1),
                        "its notional source holds no fluid cell",
-                       "refine fluid.dx or move the nozzle (jet_mill.nozzles.height)");
+                       q.feed ? "refine fluid.dx or move the feed (jet_mill.feed.height)"
+                              : "refine fluid.dx or move the nozzle (jet_mill.nozzles.height)");
     const double mass_per_step = q.mass_flow * f.dt / (f.density * cell_volume);  // lattice
     const Vec3 force_si = q.momentum_flux() * q.dir / cell_volume;                // N/m^3 per w
     for (const Weighted& c : cells) {
