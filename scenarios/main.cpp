@@ -36,6 +36,17 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   study->add_flag("--no-plots", so.no_plots, "skip the PNG plots");
   study->add_flag("--list", so.list, "list the studies");
+  study->add_flag("--no-run", so.no_run,
+                  "compare the cases already in the study folder; run and resume none");
+  study
+      ->add_option("--from", so.window_from,
+                   "start of the statistics window [s] (fluidized_bed; default: 0.05 s after the "
+                   "gas ramp)")
+      ->check(CLI::PositiveNumber);
+  study
+      ->add_option("--to", so.window_to,
+                   "end of the statistics window [s] (fluidized_bed; default: each case's end)")
+      ->check(CLI::PositiveNumber);
   study->add_flag("--quick", so.quick,
                   "a short check of the whole chain at reduced size and end time (jet_mill)");
   try {

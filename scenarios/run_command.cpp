@@ -106,6 +106,15 @@ int run_study(const StudyOptions& opt) {
   if (opt.quick && opt.name != "jet_mill")
     throw InputError("--quick", "", "only the jet_mill study has a quick form",
                      "run ./lbdem study " + opt.name + " --end-time T for a short window");
+  if ((opt.window_from > 0 || opt.window_to > 0) && opt.name != "fluidized_bed")
+    throw InputError(opt.window_from > 0 ? "--from" : "--to",
+                     to_text(opt.window_from > 0 ? opt.window_from : opt.window_to),
+                     "only the fluidized_bed study takes a window (the " + opt.name +
+                         " study's is the seed study's)",
+                     "leave it out");
+  if (opt.window_from > 0 && opt.window_to > 0 && opt.window_to <= opt.window_from)
+    throw InputError("--to", to_text(opt.window_to), "the window ends before it starts",
+                     "give --to above --from (" + to_text(opt.window_from) + " s)");
   if (opt.name == "rheometer") return run_rheometer_study(opt);
   if (opt.name == "fluidized_bed") return run_fluidized_bed_study(opt);
   if (opt.name == "jet_mill") return run_jet_mill_study(opt);

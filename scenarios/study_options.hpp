@@ -12,7 +12,9 @@ struct StudyOptions {
   double end_time = 0;             // > 0: overrides each case's run.end_time (a measured window)
   int threads = 0;
   bool list = false, no_plots = false;
-  bool quick = false;  // the study's short check form (studies that have one)
+  bool quick = false;   // the study's short check form (studies that have one)
+  bool no_run = false;  // compare the cases already in the folder; run and resume none
+  double window_from = 0, window_to = 0;  // > 0: the statistics window [s] (fluidized_bed)
 };
 
 }  // namespace lbdem::scenarios

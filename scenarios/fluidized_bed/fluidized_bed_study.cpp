@@ -52,6 +52,26 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
+// lbdem-compare-runs' least number of samples in a window (tools/src/compare_runs.cpp).
+constexpr std::size_t kMinWindowRows = 16;
+
+// Rows of a timeseries.csv whose time lies in [from, to].
+std::size_t rows_in_window(const std::string& csv, double from, double to) {
+  std::ifstream f(csv);
+  std::string line;
+  std::getline(f, line);  // header
+  std::size_t n = 0;
+  while (std::getline(f, line)) {
+    try {
+      const double t = std::stod(line.substr(0, line.find(',')));
+      if (t >= from && t <= to) ++n;
+    } catch (const std::exception&) {
+      // a partly written last row of a running case
+    }
+  }
+  return n;
+}
+
 // mean, stderr_mean, std and stderr_std of each run folder in a compare-runs stats file.
 std::map<std::string, std::array<double, 4>> read_stats(const std::string& path) {
   std::map<std::string, std::array<double, 4>> out;
@@ -99,21 +119,31 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
     if (!fs::exists(dir + "/config.toml") || last_time(dir + "/timeseries.csv") <= 0) continue;
     const Config cfg = Config::from_file(dir + "/config.toml");
     const Config inlet = cfg.section("fluid").section("faces").section("z_lo");
-    from = std::max(from, inlet.get("ramp_start", 0.0) + inlet.get("ramp_time", 0.0) + 0.05);
+    from = opt.window_from > 0
+               ? opt.window_from
+               : std::max(from, inlet.get("ramp_start", 0.0) + inlet.get("ramp_time", 0.0) + 0.05);
     present.push_back(&c);
   }
-  // A case that has not reached the fluidized window yet (a CG 1 run measured over a short
-  // window) has nothing to compare: it stays in the table without statistics.
+  // A case with fewer rows in the window than lbdem-compare-runs needs (a CG 1 run that has not
+  // got far enough yet) has nothing to compare: it stays in the table without statistics.
   std::vector<const Case*> compared;
-  for (const Case* c : present)
-    if (last_time(root + "/" + c->name + "/timeseries.csv") > from) compared.push_back(c);
+  for (const Case* c : present) {
+    const std::size_t rows = rows_in_window(root + "/" + c->name + "/timeseries.csv", from,
+                                            opt.window_to > 0 ? opt.window_to : 1e300);
+    if (rows >= kMinWindowRows)
+      compared.push_back(c);
+    else
+      std::cerr << "fluidized_bed study: " << c->name << " has " << rows << " rows from " << from
+                << " s (" << kMinWindowRows << " needed): in the table without statistics\n";
+  }
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string python = LBDEM_PYTHON;
   const std::array<std::string, 2> columns = {"bed_height_m", "pressure_drop_Pa"};
   std::array<std::map<std::string, std::array<double, 4>>, 2> stats;
   for (std::size_t k = 0; k < columns.size() && !compared.empty(); ++k) {
     std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column " + columns[k] +
-                      " --from " + fmt(from, "%.17g");
+                      " --from " + fmt(from, "%.17g") +
+                      (opt.window_to > 0 ? " --to " + fmt(opt.window_to, "%.17g") : std::string());
     for (const Case* c : compared) cmd += " '" + root + "/" + c->name + "' --label " + c->name;
     const std::string prefix = root + "/" + columns[k];
     cmd += " --out '" + prefix + "' > '" + prefix + "_table.txt'";

@@ -392,8 +392,8 @@ TEST_CASE("jet mill with particles: bad input names the key", "[scenarios][jet_m
 }
 
 TEST_CASE("jet mill study: bad input names the option", "[scenarios][jet_mill]") {
-  // An unknown case (CG-3 is not in the seed study's series) and --quick where a study has none:
-  // exit 2, one line naming the option and the fix, and no study folder.
+  // An unknown case (CG-3 is not in the seed study's series), --quick where a study has none, and
+  // bad windows: exit 2, one line naming the option and the fix, and no study folder.
   const std::string out = tmpdir("jm_study_bad");
   const auto unknown = cli("study jet_mill --cases cg3 --out " + out);
   CHECK(unknown.code == 2);
@@ -405,6 +405,13 @@ TEST_CASE("jet mill study: bad input names the option", "[scenarios][jet_mill]")
   const auto both = cli("study jet_mill --quick --end-time 0.01 --out " + out);
   CHECK(both.code == 2);
   CHECK(both.err.find("'--end-time'") != std::string::npos);
+  // A statistics window where the study has the seed's fixed one, and one that ends first.
+  const auto window = cli("study jet_mill --from 0.05 --out " + out);
+  CHECK(window.code == 2);
+  CHECK(window.err.find("'--from'") != std::string::npos);
+  const auto reversed = cli("study fluidized_bed --from 0.3 --to 0.2 --out " + out);
+  CHECK(reversed.code == 2);
+  CHECK(reversed.err.find("'--to'") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
 }
 
