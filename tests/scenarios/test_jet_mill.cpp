@@ -44,6 +44,16 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 namespace {
+// The gas-only preset's text with its 0.5 mm cells replaced by dx.
+std::string gas_preset(double dx) {
+  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string cfg = text.str();
+  cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = " + std::to_string(dx));
+  return cfg;
+}
+
 const double kRho = 1.2, kU = 120, kD = 8e-4, kRadius = 0.025;
 const double kMassFlow = kRho * kU * kPi * kD * kD / 4;  // per nozzle [kg/s]
 // The jets' torque about the axis: a force J = mdot U along a nozzle axis through the exit point on
@@ -53,12 +63,8 @@ const double kTorque = 4 * kMassFlow * kU * kRadius * std::cos(40 * kPi / 180);
 
 TEST_CASE("jet mill: the nozzles' sources hold mdot, J and the jets' torque on any grid",
           "[scenarios][jet_mill]") {
-  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
-  std::stringstream text;
-  text << in.rdbuf();
   for (const double dx : {1e-3, 5e-4, 2.5e-4}) {
-    std::string cfg = text.str();
-    cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = " + std::to_string(dx));
+    const std::string cfg = gas_preset(dx);
     lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
     const auto& f = mill.box().fluid();
     const auto src = lbdem::scenarios::jet_sources(*mill.box().gas(), f, mill.geometry());
@@ -98,11 +104,7 @@ TEST_CASE("jet mill: the feed inlet adds its own mass flow and momentum, apart f
   // degrees to the wall tangent: the four jets' forces cancel (90 degrees apart), so the sources'
   // net force is the feed's J along its axis, and their mass the jets' plus the feed's
   // rho U pi d^2 / 4; both exact to round-off, as for the jets (sums of a few hundred terms).
-  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string cfg = text.str();
-  cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = 1e-3");
+  std::string cfg = gas_preset(1e-3);
   cfg += "\n[jet_mill.feed]\ndiameter = 1.5e-3\nspeed = 20.0\nangle_deg = 30.0\n";
   lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
   const auto& g = mill.geometry();
@@ -135,11 +137,7 @@ TEST_CASE("jet mill: a supply pressure feeds the jets a choked nozzle's mass flo
   // J = mdot u* + A (p* - p_a) = 1.2679 A p0 - A p_a = 0.268 N (nozzle_flow.hpp; hand values,
   // tests/scenarios/test_nozzle_flow.cpp checks the formulas). The sources must carry exactly that
   // into the gas; the lattice is set for 300 m/s so that the notional source fits the chamber.
-  std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/scenarios/jet_mill/presets/gas.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string cfg = text.str();
-  cfg.replace(cfg.find("dx = 5e-4"), 9, "dx = 1e-3");
+  std::string cfg = gas_preset(1e-3);
   cfg.replace(cfg.find("max_speed = 120.0"), 17, "max_speed = 300.0");
   cfg.replace(cfg.find("speed = 120.0 "), 14, "supply_pressure = 5e5 ");
   lbdem::scenarios::JetMillScenario mill(lbdem::Config::from_string(cfg));
