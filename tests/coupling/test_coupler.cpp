@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 
@@ -51,15 +52,18 @@ struct Rig {
     coupler = std::make_unique<Coupler>(*gas, frame, units, cs);
     dem->track_external_work();
   }
-  // One exchange interval: the gas steps first, then the DEM (scenarios do the same).
-  void interval() {
+  // One exchange interval: the gas steps first, then the DEM (scenarios do the same);
+  // `after_gas_step` runs after each gas step (to read the boundaries' loads).
+  ExchangeReport interval(const std::function<void()>& after_gas_step = {}) {
     coupler->begin_interval(dem->particles(), gas_per_interval);
     for (int k = 0; k < gas_per_interval; ++k) {
       coupler->before_gas_step();
       gas->step();
+      if (after_gas_step) after_gas_step();
     }
-    coupler->end_interval(dem->particles());
+    const ExchangeReport report = coupler->end_interval(dem->particles());
     for (int k = 0; k < dem_per_interval; ++k) dem->step();
+    return report;
   }
   // Momentum of gas and particles at the half step (see the momentum test).
   Vec3 momentum() const {
@@ -215,19 +219,13 @@ TEST_CASE("two-way exchange with walls, an inlet and an outlet balances the boun
   const Vec3 p0 = rig.momentum();
   Vec3 impulse = Vec3::Zero();
   double scale = p0.norm(), drag = 0;
-  for (int n = 0; n < 50; ++n) {
-    rig.coupler->begin_interval(rig.dem->particles(), rig.gas_per_interval);
-    for (int k = 0; k < rig.gas_per_interval; ++k) {
-      rig.coupler->before_gas_step();
-      rig.gas->step();
-      for (int b = 1; b <= rig.gas->body_count(); ++b) {
-        impulse += per * rig.gas->wall_force(b);
-        scale += per * rig.gas->wall_force(b).norm();
-      }
+  const auto add_loads = [&] {
+    for (int b = 1; b <= rig.gas->body_count(); ++b) {
+      impulse += per * rig.gas->wall_force(b);
+      scale += per * rig.gas->wall_force(b).norm();
     }
-    drag += rig.coupler->end_interval(rig.dem->particles()).drag.norm();
-    for (int k = 0; k < rig.dem_per_interval; ++k) rig.dem->step();
-  }
+  };
+  for (int n = 0; n < 50; ++n) drag += rig.interval(add_loads).drag.norm();
   const Vec3 p1 = rig.momentum();
   const double residual = (p1 - p0 + impulse).norm();
   CAPTURE(p0.transpose(), p1.transpose(), impulse.transpose(), scale, drag, residual);
