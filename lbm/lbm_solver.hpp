@@ -20,6 +20,7 @@
 #include "lbm/fluid_runs.hpp"
 #include "lbm/forcing/guo.hpp"
 #include "lbm/grid.hpp"
+#include "lbm/level_flux.hpp"
 #include "lbm/pdf_field.hpp"
 
 #include <functional>
@@ -177,6 +178,11 @@ class LbmSolver {
   /// exchanges) to it, so it is the gas's half of a momentum balance that closes to round-off.
   /// Bitwise independent of the thread count.
   Vec3 raw_momentum() const;
+  /// Mass that crossed nested surfaces link by link during the last step (level_flux.hpp): flux[k]
+  /// entered the cells of level >= k [lattice units, per step].
+  std::vector<double> level_flux(std::span<const int> level, int levels) const {
+    return lbm::level_flux(pdf_, state_, flags_, level, levels);
+  }
 
  private:
   struct Body {

@@ -7,7 +7,8 @@ Reads, for each CASE, STUDY_DIR/CASE/timeseries.csv and the CSVs of lbdem-jet-mi
 (STUDY_DIR/CASE/mill_*.csv). Writes into STUDY_DIR: positions.png (particles seen from above at
 the window's end, Fig. 2), speed_map.png (mean particle speed on x-y bins over the window, colour
 0-30 m/s, Fig. 3), gas_midplane.png (gas speed on the mid-plane at the window's end, capped at
-120 m/s, Fig. 4), gas_profiles.png (gas tangential and radial velocity against radius),
+120 m/s, Fig. 4), gas_profiles.png (gas tangential and radial velocity against radius; the
+radial one as cell means and as the link-counted flux per cylinder area, mill_gas_radial_flow.csv),
 kinetic_energy.png (total particle kinetic energy against study time, Fig. 5), wall_profile.png
 (mean particle speed against distance from the outer wall over the window, Fig. 6). Study time is
 run time less T_SPIN (the gas spin-up). Exit 0 on success, 2 on missing input.
@@ -147,7 +148,13 @@ def main():
         if os.path.isfile(path) or os.path.isfile(path + ".gz"):
             g = columns(path)
             ax1.plot(1e3 * g["radius_m"], g["u_theta_m_per_s"], color=f"C{i}", label=c)
-            ax2.plot(1e3 * g["radius_m"], g["u_r_m_per_s"], color=f"C{i}", label=c)
+            ax2.plot(1e3 * g["radius_m"], g["u_r_m_per_s"], color=f"C{i}", ls=":",
+                     label=f"{c}, cell mean")
+        path = os.path.join(root, c, "mill_gas_radial_flow.csv")
+        if os.path.isfile(path):
+            q = columns(path)
+            ax2.plot(1e3 * q["radius_m"], q["u_r_m_per_s"], color=f"C{i}",
+                     label=f"{c}, link flux / (2 pi r H rho)")
     ax1.set_ylabel("gas tangential velocity [m/s]")
     ax2.set_ylabel("gas radial velocity [m/s] (outwards +)")
     for ax in (ax1, ax2):

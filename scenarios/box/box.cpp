@@ -459,7 +459,8 @@ int BoxScenario::run(const RunContext& ctx) {
   };
   if (gas_) {
     hooks.snapshot = [this](const std::string& dir, const std::vector<double>& times) {
-      write_fluid_snapshot(dir, *gas_, fluid_, times);
+      write_fluid_snapshot(dir, *gas_, fluid_, times,
+                           extra_.snapshot ? extra_.snapshot() : std::vector<SnapshotArray>{});
     };
     hooks.health = [this](const dem::DemSolver& s) {
       return check_fluid_health(*gas_, fluid_, s.time(), s.steps());

@@ -26,6 +26,7 @@
 #include "scenarios/common/dem_config.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
+#include "scenarios/common/fluid_output.hpp"
 #include "scenarios/common/run_context.hpp"
 #include "scenarios/common/scenario.hpp"
 
@@ -61,6 +62,8 @@ class BoxScenario : public Scenario {
     std::vector<std::string> columns;
     std::function<std::vector<double>(const dem::DemSolver&)> values;
     std::function<void(Log&)> banner;
+    /// Data sets added to every gas snapshot (fluid_output.hpp).
+    std::function<std::vector<SnapshotArray>()> snapshot;
   };
   void set_extra(Extra e) { extra_ = std::move(e); }
   /// A DEM wall from a scenario built on the box, with its timeseries columns (before run()).

@@ -19,12 +19,20 @@ namespace lbdem::scenarios {
 std::vector<std::string> fluid_columns(const FluidConfig& c);
 std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c);
 
+/// A one-dimensional data set a scenario adds to each gas snapshot (SI, its unit in the name).
+struct SnapshotArray {
+  std::string name;
+  std::vector<double> values;
+};
+
 /// Writes snapshots/fluid_NNNNNN.h5 for the last entry of `times` (index times.size() - 1) and
 /// rewrites fluid.h5 (time_s, grid, external links to every snapshot) and fluid.xdmf. Datasets,
 /// row-major (z, y, x[, component]): velocity_m_per_s, pressure_Pa (p - p_ref =
-/// (rho - rho_ref) c_s^2), porosity (1: no particles in the gas yet).
+/// (rho - rho_ref) c_s^2), porosity (1: no particles in the gas yet); then `extra`, each under
+/// /name (not in the XDMF, which lists cell fields only).
 void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
-                          const std::vector<double>& times);
+                          const std::vector<double>& times,
+                          const std::vector<SnapshotArray>& extra = {});
 
 /// Populations, AA state and gas step count under /fluid of a checkpoint.
 void save_fluid(H5Out& f, const lbm::LbmSolver& s);

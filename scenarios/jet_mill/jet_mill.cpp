@@ -45,11 +45,24 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   // The exchange's kernel must see the chamber's solid cells, which exist only now.
   box_.rebuild_coupler();
   if (box_.coupler()) box_.coupler()->set_gas_source(sources_.force);
+  {
+    const lbm::Grid& g = gas.grid();
+    ring_level_.assign(std::size_t(g.cells()), 0);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x) {
+          const Vec3 c = f.cell_centre(x, y, z) - geometry_.axis;
+          const int k = int(std::hypot(c.x(), c.y()) / f.dx);
+          ring_level_[std::size_t(g.compact_index(x, y, z))] = k;
+          ring_levels_ = std::max(ring_levels_, k + 1);
+        }
+  }
 
   BoxScenario::Extra extra;
   extra.columns = {
-      "jet_mass_flow_kg_s",       "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
-      "gas_radial_speed_mid_m_s", "gas_max_speed_m_s",     "gas_angular_momentum_z_Nms"};
+      "jet_mass_flow_kg_s",           "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
+      "gas_radial_speed_mid_m_s",     "gas_max_speed_m_s",     "gas_angular_momentum_z_Nms",
+      "gas_radial_mass_flow_mid_kg_s"};
   extra.values = [this](const dem::DemSolver&) {
     std::vector<Vec3> u;
     std::vector<double> rho;
@@ -63,7 +76,14 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
                                ring[0],
                                ring[1],
                                box_.fluid().units().velocity_to_si(umax),
-                               angular_momentum(u, rho)};
+                               angular_momentum(u, rho),
+                               radial_mass_flow()[mid_ring()]};
+  };
+  extra.snapshot = [this] {
+    std::vector<double> ring_radius(std::size_t(ring_levels_), 0.0);
+    for (int k = 0; k < ring_levels_; ++k) ring_radius[std::size_t(k)] = k * box_.fluid().dx;
+    return std::vector<SnapshotArray>{{"radial_mass_flow_radius_m", ring_radius},
+                                      {"radial_mass_flow_kg_per_s", radial_mass_flow()}};
   };
   extra.banner = [this](Log& log) { mill_banner(log); };
   box_.set_extra(std::move(extra));
@@ -224,6 +244,17 @@ double JetMillScenario::angular_momentum(const std::vector<Vec3>& u,
         l += rho[c] * (r.x() * u[c].y() - r.y() * u[c].x());
       }
   return l * units.rho * units.velocity_to_si(1.0) * f.dx * f.dx * f.dx;
+}
+
+std::vector<double> JetMillScenario::radial_mass_flow() const {
+  std::vector<double> flow = box_.gas()->level_flux(ring_level_, ring_levels_);
+  for (double& m : flow) m = box_.fluid().units().mass_flow_to_si(m);
+  return flow;
+}
+
+std::size_t JetMillScenario::mid_ring() const {
+  return std::min(std::size_t(ring_levels_ - 1),
+                  std::size_t(std::lround(0.5 * geometry_.radius / box_.fluid().dx)));
 }
 
 std::array<double, 2> JetMillScenario::ring_velocity(const std::vector<Vec3>& u, double r) const {

@@ -11,9 +11,16 @@
 //   outlet_mass_flow_kg_s              gas leaving through the vortex finder,
 //   gas_tangential_speed_mid_m_s       mean u_theta over the cells at mid-radius (|r - R/2| < dx),
 //   gas_radial_speed_mid_m_s           mean u_r there (negative: inwards),
+//   gas_radial_mass_flow_mid_kg_s      gas crossing the cylinder of radius nearest R/2 among
+//                                      the multiples of dx, outwards, during the last gas step,
+//                                      counted link by link (lbm/level_flux.hpp): the mass
+//                                      balance's own flux, where the ring's mean u_r also counts
+//                                      populations a wall sent back into the same cell,
 //   gas_max_speed_m_s                  the largest cell speed,
 //   gas_angular_momentum_z_Nms         about the chamber axis (the jets' torque spins it up),
-// and the banner the jets' Reynolds number, mass flow, momentum flux, notional source radius, and
+// every gas snapshot adds radial_mass_flow_kg_per_s through the cylinders at radial_mass_flow_
+// radius_m (multiples of dx; outwards, in the step before the snapshot), and the banner the jets'
+// Reynolds number, mass flow, momentum flux, notional source radius, and
 // cells across a nozzle, a source, the chamber height and diameter.
 #include "scenarios/box/box.hpp"
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
@@ -39,6 +46,11 @@ class JetMillScenario : public Scenario {
   std::array<double, 2> ring_velocity(const std::vector<Vec3>& u, double r) const;
   /// The gas's angular momentum about the chamber axis [N m s] from u and rho (lattice, compact).
   double angular_momentum(const std::vector<Vec3>& u, const std::vector<double>& rho) const;
+  /// Gas crossing the cylinders about the axis at radius k dx, k = 0, 1, ..., outwards during the
+  /// last gas step [kg/s] (a cell belongs inside radius k dx when its centre does).
+  std::vector<double> radial_mass_flow() const;
+  /// The cylinder of radial_mass_flow() nearest R / 2.
+  std::size_t mid_ring() const;
 
  private:
   void mill_banner(Log& log) const;
@@ -51,6 +63,8 @@ class JetMillScenario : public Scenario {
   JetMillGeometry geometry_;
   JetSources sources_;
   int outlet_ = 0;
+  std::vector<int> ring_level_;  // floor(r / dx) of each cell centre, compact order
+  int ring_levels_ = 0;
 };
 
 }  // namespace lbdem::scenarios

@@ -2,8 +2,10 @@
 // positions seen from above at the end of the window (the study's Fig. 2), mean particle speed on
 // x-y bins (Fig. 3) and against the distance from the outer wall (Fig. 6) over the window's
 // particle snapshots, the gas speed on the mid-plane and its tangential and radial velocity
-// against radius at the last gas snapshot of the window (Fig. 4), and the mean speed in the jets'
-// regions. CSVs under PREFIX_*; tools/jet_mill_figures.py draws them.
+// against radius at the last gas snapshot of the window (Fig. 4), the gas crossing each cylinder
+// about the axis averaged over the window's gas snapshots (the radial flow of the mass balance),
+// and the mean speed in the jets' regions. CSVs under PREFIX_*; tools/jet_mill_figures.py draws
+// them.
 #include "core/config.hpp"
 #include "core/h5.hpp"
 #include "tools/src/mill_maps.hpp"
@@ -199,6 +201,39 @@ int main(int argc, char** argv) {
             csv += num(o[0] + x * dx) + "," + num(o[1] + y * dx) + "," + num(v) + "\n";
         }
       lbdem::write_file_atomic(prefix + "_gas_midplane.csv", csv);
+
+      // The gas crossing each cylinder, counted link by link by the run (one gas step before each
+      // snapshot), averaged over the window's snapshots; runs before 2026-11-24 lack it.
+      std::vector<double> radius, sum, sum2;
+      std::size_t samples = 0;
+      for (std::size_t i : in_window(gt, from, to)) {
+        const lbdem::H5In f(snapshot(dir, "fluid", i));
+        if (!f.has("/radial_mass_flow_kg_per_s")) continue;
+        const auto q = f.doubles("/radial_mass_flow_kg_per_s");
+        if (samples == 0) {
+          radius = f.doubles("/radial_mass_flow_radius_m");
+          sum.assign(q.size(), 0.0), sum2.assign(q.size(), 0.0);
+        }
+        if (q.size() != sum.size())
+          throw ToolError("radial mass flow of " + snapshot(dir, "fluid", i) + " changes size");
+        for (std::size_t r = 0; r < q.size(); ++r) sum[r] += q[r], sum2[r] += q[r] * q[r];
+        ++samples;
+      }
+      if (samples > 0) {
+        // u_r that carries the flux through the cylinder's whole height at the gas's reference
+        // density: the radial velocity of the mass balance.
+        const double rho = g.attr_double("pressure_reference_density_kg_m3");
+        const double height = hi[2] - lo[2], n = double(samples);
+        csv = "radius_m,mass_flow_kg_per_s,std_err_kg_per_s,snapshots,u_r_m_per_s\n";
+        for (std::size_t r = 0; r < sum.size(); ++r) {
+          const double mean = sum[r] / n;
+          const double var = n > 1 ? std::max(0.0, (sum2[r] - n * mean * mean) / (n - 1)) : kNaN;
+          const double ur = radius[r] > 0 ? mean / (2 * M_PI * radius[r] * height * rho) : kNaN;
+          csv += num(radius[r]) + "," + num(mean) + "," + num(std::sqrt(var / n)) + "," + num(n) +
+                 "," + num(ur) + "\n";
+        }
+        lbdem::write_file_atomic(prefix + "_gas_radial_flow.csv", csv);
+      }
     }
 
     csv =

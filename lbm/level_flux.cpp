@@ -1,0 +1,51 @@
+#include "lbm/level_flux.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace lbdem::lbm {
+
+std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& flags,
+                               std::span<const int> level, int levels) {
+  const Grid& g = pdf.grid();
+  if (levels < 1 || level.size() != std::size_t(g.cells()))
+    throw std::invalid_argument("level_flux: " + std::to_string(level.size()) + " levels for " +
+                                std::to_string(g.cells()) + " cells");
+  const auto level_of = [&](int x, int y, int z) {
+    const int l = level[std::size_t(g.compact_index(x, y, z))];
+    if (l < 0 || l >= levels)
+      throw std::invalid_argument("level_flux: fluid cell (" + std::to_string(x) + ", " +
+                                  std::to_string(y) + ", " + std::to_string(z) + ") has level " +
+                                  std::to_string(l) + ", outside [0, " + std::to_string(levels) +
+                                  ")");
+    return l;
+  };
+  std::vector<double> flux(std::size_t(levels), 0.0);
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        if (!flags.fluid(g.index(x, y, z))) continue;
+        const int to = level_of(x, y, z);
+        const double* in[kQ];
+        read_pointers(pdf, s, x, y, z, in);
+        for (int q = 1; q < kQ; ++q) {
+          // The population f_q(y) came from x - c_q (wrapped on periodic axes); links from ghosts
+          // (box faces) and solids are boundary links.
+          const int sx = g.shift(0, x, -kCx[q]), sy = g.shift(1, y, -kCy[q]),
+                    sz = g.shift(2, z, -kCz[q]);
+          if (sx < 0 || sx >= g.nx() || sy < 0 || sy >= g.ny() || sz < 0 || sz >= g.nz() ||
+              !flags.fluid(g.index(sx, sy, sz)))
+            continue;
+          const int from = level_of(sx, sy, sz);
+          if (from == to) continue;
+          const double f = *in[q];
+          if (from < to)
+            for (int k = from + 1; k <= to; ++k) flux[std::size_t(k)] += f;
+          else
+            for (int k = to + 1; k <= from; ++k) flux[std::size_t(k)] -= f;
+        }
+      }
+  return flux;
+}
+
+}  // namespace lbdem::lbm
