@@ -44,7 +44,11 @@ const std::vector<Case>& cases() {
       {"cg1", 1, false}, {"cg2", 2, false}, {"cg4", 4, false}, {"cg8", 8, false},
       {"cg10", 10, false}, {"cg10_tc30", 10, false},
       {"cg1_fixed", 1, false}, {"cg2_fixed", 2, false}, {"cg4_fixed", 4, false, "cg4"},
-      {"cg8_fixed", 8, false}, {"cg10_fixed", 10, false}};
+      {"cg8_fixed", 8, false}, {"cg10_fixed", 10, false},
+      // The 5 bar nozzles on that fixed grid.
+      {"cg1_fixed_p5bar", 1, false}, {"cg2_fixed_p5bar", 2, false},
+      {"cg4_fixed_p5bar", 4, false, "cg4_p5bar"}, {"cg8_fixed_p5bar", 8, false},
+      {"cg10_fixed_p5bar", 10, false}};
   // clang-format on
   return c;
 }
@@ -251,7 +255,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
   const auto coll = read_rows(root + "/collisions.csv");
   const auto ke = read_rows(root + "/kinetic_energy_stats.csv");
   // Each case is compared with CG 1 of its own series, named after "cgN": the scaled cells ("",
-  // and cg10_tc30, cg10 with a shorter DEM step), "_fixed", "_p5bar".
+  // and cg10_tc30, cg10 with a shorter DEM step), "_fixed", "_p5bar", "_fixed_p5bar".
   const auto series_ref = [](const std::string& name) {
     const std::size_t us = name.find('_');
     const std::string series = us == std::string::npos ? "" : name.substr(us);
