@@ -391,6 +391,13 @@ void LbmSolver::add_mass_sources() {
   }
 }
 
+std::vector<double> LbmSolver::level_flux(std::span<const int> level, int levels) const {
+  std::vector<AddedMass> added;
+  added.reserve(mass_sources_.size());
+  for (const MassSource& m : mass_sources_) added.push_back({grid().index(m.x, m.y, m.z), m.mass});
+  return lbm::level_flux(pdf_, state_, flags_, level, levels, added);
+}
+
 void LbmSolver::load_state(const std::vector<double>& populations, AaState s, long steps) {
   if (Index(populations.size()) != pdf_.size())
     throw std::invalid_argument("checkpoint holds " + std::to_string(populations.size()) +

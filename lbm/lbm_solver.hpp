@@ -179,10 +179,9 @@ class LbmSolver {
   /// Bitwise independent of the thread count.
   Vec3 raw_momentum() const;
   /// Mass that crossed nested surfaces link by link during the last step (level_flux.hpp): flux[k]
-  /// entered the cells of level >= k [lattice units, per step].
-  std::vector<double> level_flux(std::span<const int> level, int levels) const {
-    return lbm::level_flux(pdf_, state_, flags_, level, levels);
-  }
+  /// entered the cells of level >= k [lattice units, per step]; the mass sources' share of the
+  /// populations is not counted as crossing.
+  std::vector<double> level_flux(std::span<const int> level, int levels) const;
 
  private:
   struct Body {

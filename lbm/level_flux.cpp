@@ -6,7 +6,8 @@
 namespace lbdem::lbm {
 
 std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& flags,
-                               std::span<const int> level, int levels) {
+                               std::span<const int> level, int levels,
+                               std::span<const AddedMass> added) {
   const Grid& g = pdf.grid();
   if (levels < 1 || level.size() != std::size_t(g.cells()))
     throw std::invalid_argument("level_flux: " + std::to_string(level.size()) + " levels for " +
@@ -20,12 +21,18 @@ std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& 
                                   ")");
     return l;
   };
+  std::vector<double> source;  // per storage cell, only when there are any
+  if (!added.empty()) {
+    source.assign(std::size_t(g.storage_cells()), 0.0);
+    for (const AddedMass& a : added) source[std::size_t(a.cell)] += a.mass;
+  }
   std::vector<double> flux(std::size_t(levels), 0.0);
   for (int z = 0; z < g.nz(); ++z)
     for (int y = 0; y < g.ny(); ++y)
       for (int x = 0; x < g.nx(); ++x) {
         if (!flags.fluid(g.index(x, y, z))) continue;
         const int to = level_of(x, y, z);
+        const double m = source.empty() ? 0.0 : source[std::size_t(g.index(x, y, z))];
         const double* in[kQ];
         read_pointers(pdf, s, x, y, z, in);
         for (int q = 1; q < kQ; ++q) {
@@ -38,7 +45,7 @@ std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& 
             continue;
           const int from = level_of(sx, sy, sz);
           if (from == to) continue;
-          const double f = *in[q];
+          const double f = *in[q] - kW[q] * m;
           if (from < to)
             for (int k = from + 1; k <= to; ++k) flux[std::size_t(k)] += f;
           else
