@@ -462,8 +462,14 @@ int BoxScenario::run(const RunContext& ctx) {
       write_fluid_snapshot(dir, *gas_, fluid_, times,
                            extra_.snapshot ? extra_.snapshot() : std::vector<SnapshotArray>{});
     };
-    hooks.health = [this](const dem::DemSolver& s) {
-      return check_fluid_health(*gas_, fluid_, s.time(), s.steps());
+    hooks.health = [this, &ctx](const dem::DemSolver& s) {
+      auto error = check_fluid_health(*gas_, fluid_, s.time(), s.steps());
+      if (!error && !mach_warned_ && ctx.log)
+        if (auto w = check_fluid_mach(*gas_, fluid_, s.time())) {
+          mach_warned_ = true;
+          ctx.log->line(*w);
+        }
+      return error;
     };
     hooks.cycle = cycle();
   }

@@ -102,6 +102,7 @@ class BoxScenario : public Scenario {
   std::array<Vec3, 6> inlet_set_;  // inflow velocity last given to each ramped face [m/s]
   Extra extra_;
   bool clip_warned_ = false;
+  bool mach_warned_ = false;  // check_fluid_mach: said once per run
   FluidConfig fluid_;
   SubCycle sub_;
   bool gas_only_ = false;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "core/deterministic_sum.hpp"
 #include "core/error.hpp"
@@ -182,6 +183,30 @@ std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const Flu
          "fluid.lattice_velocity), refine fluid.dx" +
          (c.collision == "les" ? std::string(", or raise fluid.smagorinsky")
                                : std::string(", or use fluid.collision = \"les\""));
+}
+
+std::optional<std::string> check_fluid_mach(const lbm::LbmSolver& s, const FluidConfig& c,
+                                            double time) {
+  const double limit = kWarnMach * std::sqrt(lbm::kCs2);  // lattice speed at Mach kWarnMach
+  const double big = std::numeric_limits<double>::max();
+  const auto fast = s.find_unhealthy(-big, big, limit);
+  if (!fast) return std::nullopt;
+  const lbm::LatticeUnits u = c.units();
+  const Vec3 x = c.cell_centre(fast->x, fast->y, fast->z);
+  const double speed = u.velocity_to_si(fast->speed);
+  // The step that puts this speed at lattice velocity 0.1 takes fast->speed / 0.1 times as many
+  // gas steps.
+  const double steps = fast->speed / 0.1;
+  return "warning: fluid: the gas reached lattice Mach " +
+         to_text(fast->speed / std::sqrt(lbm::kCs2)) + " at t = " + to_text(time) +
+         " s: " + to_text(speed) + " m/s at cell (" + std::to_string(fast->x) + ", " +
+         std::to_string(fast->y) + ", " + std::to_string(fast->z) + "), [" + to_text(x[0]) + ", " +
+         to_text(x[1]) + ", " + to_text(x[2]) + "] m (the weakly compressible gas's " +
+         "errors grow as Ma^2; DESIGN 5 keeps Mach 0.17); the run goes on; fix: " +
+         "a gas step of at most " + to_text(0.1 * c.dx / speed) +
+         " s (fluid.max_speed = " + to_text(speed) +
+         " m/s at fluid.lattice_velocity = 0.1, or fluid.dt; " + to_text(steps) +
+         "x the gas steps), or slower inflows";
 }
 
 }  // namespace lbdem::scenarios

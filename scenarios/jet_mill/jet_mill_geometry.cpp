@@ -80,7 +80,13 @@ Nozzle read_nozzle(const Config& n, const JetMillGeometry& g, const FluidConfig&
   q.speed = u;
   q.mass_flow = mdot;
   q.supply_pressure = p0;
-  const double u_cap = f.max_speed;
+  // The speed the notional source is sized for: by default the one the gas step was set for; a
+  // lower one widens the source (the same J at a lower core speed) so that a step set for a
+  // faster gas keeps the same jet on every grid.
+  const std::string cap_fix = "give the notional source's speed in m/s, at most fluid.max_speed (" +
+                              to_text(f.max_speed) + " m/s), which sets the gas step";
+  const double u_cap =
+      n.get("source_speed", f.max_speed, Range{0, f.max_speed, true, false, cap_fix});
   q.source_radius =
       std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
   return q;

@@ -13,7 +13,8 @@
 //   - momentum: a force density whose integral is J (the lattice's Guo forcing),
 // spread over a notional source, a cylinder on the nozzle axis from the exit at the wall, of radius
 //   r_s = max(d/2, sqrt(J / (pi rho U_cap^2)))
-// and length 2 r_s, U_cap the gas speed the time step was set for (fluid.max_speed): a jet with the
+// and length 2 r_s, U_cap the gas speed the time step was set for (fluid.max_speed) unless
+// jet_mill.nozzles.source_speed gives a lower one: a jet with the
 // same momentum flux at the speed the lattice can carry (the pseudo-diameter idea: Birch et al.
 // 1984, Combust. Sci. Technol. 36, 249, and Ewan & Moodie 1986, ibid. 45, 275, conserve the mass of
 // an under-expanded jet across its shock cells; Birch, Hughes & Swaffield 1987, ibid. 52, 161, its

@@ -156,6 +156,28 @@ TEST_CASE("jet mill: a supply pressure feeds the jets a choked nozzle's mass flo
   CHECK(mass * kRho * cell / f.dt == Approx(4 * mdot).epsilon(1e-10));
   CHECK(abs_force == Approx(4 * (cf * area * 5e5 - area * 101325)).epsilon(1e-10));
   CHECK(mill.geometry().nozzles.front().supply_pressure == 5e5);
+  // The notional source carries J at the speed it is sized for, sqrt(J / (pi rho r_s^2)): the gas
+  // step's 300 m/s by default, or a lower jet_mill.nozzles.source_speed (the p5bar presets keep the
+  // source of 300 m/s on a step set for 450 m/s). The sources' sums stay exact either way.
+  const double thrust = cf * area * 5e5 - area * 101325;
+  const auto core_speed = [&](const lbdem::scenarios::JetMillScenario& m) {
+    const double rs = m.geometry().nozzles.front().source_radius;
+    return std::sqrt(thrust / (lbdem::kPi * kRho * rs * rs));
+  };
+  CHECK(core_speed(mill) == Approx(300).epsilon(1e-12));
+  std::string wide = cfg;
+  wide.replace(wide.find("max_speed = 300.0"), 17, "max_speed = 450.0");
+  wide.replace(wide.find("supply_pressure = 5e5 "), 22,
+               "supply_pressure = 5e5\nsource_speed = 300.0 ");
+  lbdem::scenarios::JetMillScenario mill450(lbdem::Config::from_string(wide));
+  CHECK(core_speed(mill450) == Approx(300).epsilon(1e-12));
+  CHECK(mill450.box().fluid().dt == Approx(f.dt * 300 / 450).epsilon(1e-12));
+  const auto src450 = lbdem::scenarios::jet_sources(*mill450.box().gas(), mill450.box().fluid(),
+                                                    mill450.geometry());
+  double abs450 = 0;
+  const double to_si450 = cell / mill450.box().fluid().units().force_density_to_lattice(1.0);
+  for (const auto& fc : src450.force) abs450 += to_si450 * fc.norm();
+  CHECK(abs450 == Approx(4 * thrust).epsilon(1e-10));
 }
 
 TEST_CASE("jet mill: the jets spin the gas up at their torque 4 J R cos(40 deg) on two grids",
@@ -319,6 +341,8 @@ TEST_CASE("jet mill: bad input stops with one line naming the key", "[scenarios]
       {"jet_mill.nozzles.supply_pressure=5e5", "jet_mill.nozzles.speed"},
       // ... and a supply temperature without a supply pressure, naming the temperature.
       {"jet_mill.nozzles.supply_temperature=300.0", "jet_mill.nozzles.supply_temperature"},
+      // A source sized for more than the gas step allows (the preset's max_speed is 120 m/s).
+      {"jet_mill.nozzles.source_speed=200.0", "jet_mill.nozzles.source_speed"},
   };
   for (const Case& c : cases) {
     const std::string out = tmpdir("jet_mill_bad");
