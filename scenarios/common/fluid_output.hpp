@@ -56,8 +56,8 @@ std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const Flu
 inline constexpr double kWarnMach = 0.2;
 
 /// nullopt if every fluid cell's speed is below lattice Mach kWarnMach; else the one-line warning:
-/// time, the first such cell (storage order) with its SI centre and speed, the lattice Mach, and
-/// the fix (the fluid.max_speed that would keep it at lattice velocity 0.1, and its cost in steps).
+/// time, the fastest cell with its SI centre and speed, the lattice Mach, and the fix (the step
+/// that would keep it at lattice velocity 0.1, and its cost in steps). A pass over the gas.
 std::optional<std::string> check_fluid_mach(const lbm::LbmSolver& s, const FluidConfig& c,
                                             double time);
 

@@ -32,7 +32,8 @@ double start_offset(const Nozzle& q, const Vec3& axis, double dx) {
 // angle to the wall tangent, axis height, diameter, and the jet from a supply pressure
 // (nozzle_flow.hpp: a choked nozzle's mass flow and the speed that carries its momentum flux) or
 // given as exit speed and mass flow.
-Nozzle read_nozzle(const Config& n, const JetMillGeometry& g, const FluidConfig& f, double at_deg) {
+Nozzle read_nozzle(const Config& n, const JetMillGeometry& g, const FluidConfig& f, double at_deg,
+                   double source_default) {
   const double angle =
       n.get("angle_deg", 40.0,
             Range::closed(5, 90, "give the angle to the wall tangent in degrees, 5 - 90"));
@@ -86,7 +87,7 @@ Nozzle read_nozzle(const Config& n, const JetMillGeometry& g, const FluidConfig&
   const std::string cap_fix = "give the notional source's speed in m/s, at most fluid.max_speed (" +
                               to_text(f.max_speed) + " m/s), which sets the gas step";
   const double u_cap =
-      n.get("source_speed", f.max_speed, Range{0, f.max_speed, true, false, cap_fix});
+      n.get("source_speed", source_default, Range{0, f.max_speed, true, false, cap_fix});
   q.source_radius =
       std::max(0.5 * d, std::sqrt(q.momentum_flux() / (kPi * f.density * u_cap * u_cap)));
   return q;
@@ -199,7 +200,7 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
   const int count = int(n.get_int("count", 4, Range::closed(1, 64)));
   const double first = n.get("first_deg", 0.0, Range::closed(-360, 360));
   for (int k = 0; k < count; ++k) {
-    const Nozzle q = read_nozzle(n, g, f, first + 360.0 * k / count);
+    const Nozzle q = read_nozzle(n, g, f, first + 360.0 * k / count, f.max_speed);
     g.nozzles.push_back(q);
     if (k == 0) check_source_fits(n, q, g, f, section);
   }
@@ -210,7 +211,8 @@ JetMillGeometry read_jet_mill(const Config& section, const FluidConfig& f) {
                             Range::closed(-360, 360,
                                           "give where on the wall the feed enters, in degrees "
                                           "counter-clockwise from +x"));
-    Nozzle q = read_nozzle(c, g, f, at);
+    // The feed's source is sized as the grinding nozzles' unless it says otherwise.
+    Nozzle q = read_nozzle(c, g, f, at, n.get("source_speed", f.max_speed));
     q.feed = true;
     check_source_fits(c, q, g, f, section);
     g.nozzles.push_back(q);

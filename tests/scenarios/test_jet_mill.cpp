@@ -129,6 +129,21 @@ TEST_CASE("jet mill: the feed inlet adds its own mass flow and momentum, apart f
   for (const auto& fc : src.force) force += to_si * fc;
   CHECK(mass * kRho * cell / f.dt == Approx(4 * kMassFlow + feed_mdot).epsilon(1e-12));
   CHECK((force - feed_j * dir).norm() < 1e-10 * 4 * kMassFlow * kU);
+
+  // The feed's notional source is sized for the grinding nozzles' source_speed unless it gives its
+  // own: r_s = (d / 2) U / U_cap where that exceeds d / 2. Nozzles sized for 60 m/s: 0.8 mm; a
+  // 0.5 mm feed at 110 m/s: 0.458 mm, at its own 100 m/s 0.275 mm.
+  std::string slow = gas_preset(1e-3);
+  slow.replace(slow.find("\nspeed = 120.0"), 1, "\nsource_speed = 60.0\n");
+  for (const double own : {0.0, 100.0}) {
+    std::string c = slow + "\n[jet_mill.feed]\ndiameter = 5e-4\nspeed = 110.0\n";
+    if (own > 0) c += "source_speed = 100.0\n";
+    lbdem::scenarios::JetMillScenario m(lbdem::Config::from_string(c));
+    INFO("feed source_speed " << own);
+    CHECK(m.geometry().nozzles.front().source_radius == Approx(4e-4 * 120 / 60).epsilon(1e-12));
+    CHECK(m.geometry().nozzles.back().source_radius ==
+          Approx(2.5e-4 * 110 / (own > 0 ? own : 60.0)).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("jet mill: a supply pressure feeds the jets a choked nozzle's mass flow and thrust",
