@@ -12,6 +12,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -28,9 +29,17 @@ using namespace lbdem::lbm;
 
 namespace {
 
-double mean_u2(const PdfField& pdf, AaState s) {
+double mean_u2(const PdfField<double>& pdf, AaState s) {
   std::vector<Vec3> u;
   moment_fields(pdf, s, NoForce{}, FlagField(pdf.grid()), nullptr, &u);
+  double e = 0;
+  for (const Vec3& v : u) e += v.squaredNorm();
+  return e / double(u.size());
+}
+
+double mean_u2(const LbmSolver& solver) {
+  std::vector<Vec3> u;
+  solver.raw_velocity(u);
   double e = 0;
   for (const Vec3& v : u) e += v.squaredNorm();
   return e / double(u.size());
@@ -48,7 +57,7 @@ void stream_row(double* dst, const double* src, int nx) {
 
 /// Two-lattice pull step src -> dst: f_q(x) is read from x - c_q of src, collided, written to x.
 template <bool kNonTemporal>
-void two_lattice_step(const PdfField& src, PdfField& dst, const Bgk& op) {
+void two_lattice_step(const PdfField<double>& src, PdfField<double>& dst, const Bgk& op) {
   const Grid& g = src.grid();
   const int nx = g.nx();
   for_each_row(g, [&](int y, int z) {
@@ -89,9 +98,10 @@ std::uint64_t fnv1a(const double* p, std::size_t n) {
 }
 
 Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, double u0,
-        bool porous) {
+        bool porous, PopulationStorage storage) {
   LbmSettings s;
   s.nx = s.ny = s.nz = n;
+  s.storage = storage;
   s.collision = op;
   if (porous) s.collision = Trt::from_tau(1.0 / op.omega);
   LbmSolver solver(s);
@@ -114,30 +124,37 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
   });
   if (scheme == "aa" || porous) {
     for (int w = 0; w < warmup; ++w) solver.step();
-    const double e0 = mean_u2(solver.pdf(), solver.state());
+    const double e0 = mean_u2(solver);
     Stopwatch clock;
     for (int w = 0; w < steps; ++w) solver.step();
     const double wall = clock.seconds();
     const MemoryUse memory = memory_use();
     std::vector<double> f;  // interior populations only: the padding is never written
     f.reserve(std::size_t(kQ) * n * n * n);
-    for (int q = 0; q < kQ; ++q)
-      for (int l = 0; l < n; ++l)
-        for (int j = 0; j < n; ++j)
-          for (int i = 0; i < n; ++i) f.push_back(solver.pdf().at(q, solver.grid().index(i, j, l)));
-    return {double(n) * n * n * steps / wall / 1e6, mean_u2(solver.pdf(), solver.state()) / e0,
-            fnv1a(f.data(), f.size()), memory};
+    double cell[kQ];
+    for (int l = 0; l < n; ++l)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          solver.cell_populations(i, j, l, cell);
+          f.insert(f.end(), cell, cell + kQ);
+        }
+    return {double(n) * n * n * steps / wall / 1e6, mean_u2(solver) / e0, fnv1a(f.data(), f.size()),
+            memory};
   }
   // Streaming stores need rows starting on 64-byte boundaries (grid.hpp); copy cell by cell.
   const Grid padded(n, n, n, {true, true, true}, scheme == "nt");
-  PdfField a(padded), b(padded);
+  PdfField<double> a(padded), b(padded);
   for (int l = 0; l < n; ++l)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (int q = 0; q < kQ; ++q)
-          a.at(q, padded.index(i, j, l)) = b.at(q, padded.index(i, j, l)) =
-              solver.pdf().at(q, solver.grid().index(i, j, l));
-  PdfField* cur[2] = {&a, &b};
+      for (int i = 0; i < n; ++i) {
+        double cell[kQ];
+        solver.cell_populations(i, j, l, cell);
+        for (int q = 0; q < kQ; ++q) {
+          a.set(q, padded.index(i, j, l), cell[q]);
+          b.set(q, padded.index(i, j, l), cell[q]);
+        }
+      }
+  PdfField<double>* cur[2] = {&a, &b};
   auto advance = [&](int count) {
     for (int w = 0; w < count; ++w) {
       if (scheme == "nt")
@@ -165,6 +182,7 @@ int main(int argc, char** argv) {
   int steps = 200, warmup = 20;
   double tau = 0.6, u0 = 0.05;
   bool porous = false;
+  std::vector<std::string> storages = {"double"};
   app.add_option("--n", sizes, "cube edges N (cells)");
   app.add_option("--threads", threads, "OpenMP thread counts");
   app.add_option("--steps", steps, "timed steps")->check(CLI::PositiveNumber);
@@ -177,7 +195,18 @@ int main(int argc, char** argv) {
   app.add_flag("--porous", porous,
                "the coupled gas kernel instead: TRT, porous form, per-cell force, velocity sums "
                "(scheme aa)");
+  app.add_option("--storage", storages,
+                 "population storage of the AA kernel: double, float (f - w in float, arithmetic "
+                 "in double; lbm/pdf_field.hpp)")
+      ->check(CLI::IsMember({"double", "float"}));
   CLI11_PARSE(app, argc, argv);
+  const bool any_float = std::count(storages.begin(), storages.end(), "float") > 0;
+  if (any_float && std::count(schemes.begin(), schemes.end(), "aa") != long(schemes.size())) {
+    std::fprintf(stderr,
+                 "lbdem-bench-lbm: --storage float runs the solver's AA kernel only; "
+                 "fix: drop --scheme or give --scheme aa\n");
+    return 2;
+  }
   if (porous && (schemes.size() != 1 || schemes.front() != "aa")) {
     std::fprintf(stderr,
                  "lbdem-bench-lbm: --porous runs the solver's AA kernel only; "
@@ -187,28 +216,32 @@ int main(int argc, char** argv) {
 
   const MemoryUse base = memory_use();  // the program before any lattice
   const Bgk op = Bgk::from_tau(tau);
-  for (const std::string& scheme : schemes)
-    for (int n : sizes)
-      for (int t : threads) {
-        omp_set_num_threads(t);
-        const Run r = run(scheme, n, steps, warmup, op, u0, porous);
-        const double k = 2.0 * kPi / n;
-        const double theory = std::exp(-6.0 * op.viscosity() * k * k * steps);
-        // Bytes per cell update for the roofline: 19 loads + 19 stores of 8 B; ordinary stores on
-        // two lattices also read each destination line first (write-allocate), 456 B.
-        const double bytes = scheme == "ab" ? 456 : 304;
-        std::printf(
-            "lbdem LBM TGV N=%d, %d thread(s): %.1f MLUPS, E_ratio %.4f (theory %.3f), scheme %s, "
-            "%.0f B/cell = %.1f GB/s%s state_hash=%016llx rss_bytes=%zu base_rss_bytes=%zu "
-            "peak_bytes=%zu\n",
-            n, t, r.mlups, r.e_ratio, theory, porous ? "aa" : scheme.c_str(), bytes,
-            r.mlups * bytes / 1e3,
-            porous
-                ? " (porous TRT kernel with Darcy drag: the theory is the free decay, not this one)"
-                : "",
-            static_cast<unsigned long long>(r.hash), r.memory.resident, base.resident,
-            r.memory.peak);
-        std::fflush(stdout);
-      }
+  for (const std::string& storage : storages)
+    for (const std::string& scheme : schemes)
+      for (int n : sizes)
+        for (int t : threads) {
+          omp_set_num_threads(t);
+          const bool f32 = storage == "float";
+          const Run r = run(scheme, n, steps, warmup, op, u0, porous,
+                            f32 ? PopulationStorage::float32 : PopulationStorage::float64);
+          const double k = 2.0 * kPi / n;
+          const double theory = std::exp(-6.0 * op.viscosity() * k * k * steps);
+          // Bytes per cell update for the roofline: 19 loads + 19 stores of 8 B (4 B in float);
+          // ordinary stores on two lattices also read each destination line first (write-allocate),
+          // 456 B. Float runs are labelled "lbdem-float" so that the double parsers skip them.
+          const double bytes = f32 ? 152 : scheme == "ab" ? 456 : 304;
+          std::printf(
+              "%s LBM TGV N=%d, %d thread(s): %.1f MLUPS, E_ratio %.4f (theory %.3f), scheme %s, "
+              "%.0f B/cell = %.1f GB/s%s state_hash=%016llx rss_bytes=%zu base_rss_bytes=%zu "
+              "peak_bytes=%zu\n",
+              f32 ? "lbdem-float" : "lbdem", n, t, r.mlups, r.e_ratio, theory,
+              porous ? "aa" : scheme.c_str(), bytes, r.mlups * bytes / 1e3,
+              porous ? " (porous TRT kernel with Darcy drag: the theory is the free decay, not "
+                       "this one)"
+                     : "",
+              static_cast<unsigned long long>(r.hash), r.memory.resident, base.resident,
+              r.memory.peak);
+          std::fflush(stdout);
+        }
   return 0;
 }

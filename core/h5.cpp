@@ -218,6 +218,10 @@ std::string H5In::attr_string(const std::string& name, const std::string& object
   return s;
 }
 
+bool H5In::has_attr(const std::string& name, const std::string& object) const {
+  return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
 void write_file_atomic(const std::string& path, const std::string& content) {
   const std::string tmp = path + ".tmp";
   {

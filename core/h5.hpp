@@ -58,6 +58,7 @@ class H5In {
   double attr_double(const std::string& name, const std::string& object = "/") const;
   std::int64_t attr_int(const std::string& name, const std::string& object = "/") const;
   std::string attr_string(const std::string& name, const std::string& object = "/") const;
+  bool has_attr(const std::string& name, const std::string& object = "/") const;
 
  private:
   std::size_t read_raw(const std::string& name, hid_t type, std::vector<char>& out,

@@ -7,7 +7,7 @@
 //     even step left it) and writes f_q* to slot q of x + c_q, i.e. streamed.
 // Each slot is read and written by one cell only, so there are no races and no second array; a
 // slot's cache line is written right after it was read, so there is no write-allocate traffic:
-// 19 loads + 19 stores = 304 B per cell update in double, the roofline minimum.
+// 19 loads + 19 stores = 304 B per cell update in double (152 B in float), the roofline minimum.
 //
 // In either state the post-streaming population f_q(x) is readable: natural: slot q of x;
 // swapped: slot qbar of x - c_q. read_pointers() gives those addresses for a run of a row, so the
@@ -24,9 +24,10 @@ enum class AaState {
   swapped,  // f_q(x) in slot qbar of x - c_q; the next step is an odd one
 };
 
-/// in[q] + i is the address of f_q of cell (x0 + i, y, z) for i in the x range of x0 (grid.hpp).
-inline void read_pointers(const PdfField& pdf, AaState s, int x0, int y, int z,
-                          const double* (&in)[kQ]) {
+/// in[q] + i is the address of f_q of cell (x0 + i, y, z) for i in the x range of x0 (grid.hpp);
+/// the slot is encoded (PdfField<T>::Codec::load(in[q][i], q) is f_q).
+template <class T>
+void read_pointers(const PdfField<T>& pdf, AaState s, int x0, int y, int z, const T* (&in)[kQ]) {
   const Grid& g = pdf.grid();
   const Index n0 = g.index(x0, y, z);
   if (s == AaState::natural) {
@@ -40,7 +41,8 @@ inline void read_pointers(const PdfField& pdf, AaState s, int x0, int y, int z,
 
 /// out[q] + i is where a step that starts in state s stores the post-collision f_q* of cell
 /// (x0 + i, y, z): own slot qbar on an even step, slot q of x + c_q on an odd one.
-inline void write_pointers(PdfField& pdf, AaState s, int x0, int y, int z, double* (&out)[kQ]) {
+template <class T>
+void write_pointers(PdfField<T>& pdf, AaState s, int x0, int y, int z, T* (&out)[kQ]) {
   const Grid& g = pdf.grid();
   const Index n0 = g.index(x0, y, z);
   if (s == AaState::natural) {

@@ -30,13 +30,20 @@ Grid make_grid(const LbmSettings& s) {
   return Grid(s.nx, s.ny, s.nz, s.faces.periodic_axes());
 }
 
+std::variant<PdfField<double>, PdfField<float>> make_pdf(const LbmSettings& s) {
+  const Grid g = make_grid(s);
+  if (s.storage == PopulationStorage::float32) return PdfField<float>(g);
+  return PdfField<double>(g);
+}
+
 WallVelocity uniform_velocity(const Vec3& u) {
   if (u.isZero()) return {};
   return [u](const Vec3&) { return u; };
 }
 }  // namespace
 
-LbmSolver::LbmSolver(const LbmSettings& s) : settings_(s), pdf_(make_grid(s)), flags_(pdf_.grid()) {
+LbmSolver::LbmSolver(const LbmSettings& s)
+    : settings_(s), pdf_(make_pdf(s)), flags_(with_pdf([](const auto& p) { return p.grid(); })) {
   std::array<CellFlag, 6> walls{}, open{};
   for (int f = 0; f < 6; ++f) {
     const FaceBoundary& face = s.faces[f];
@@ -169,23 +176,22 @@ void LbmSolver::initialize(
     const std::function<void(int x, int y, int z, double& rho, Vec3& u)>& init) {
   const Grid& g = grid();
   const double rho_w = settings_.wall_density;
-  for (int q = 0; q < kQ; ++q) {
-    double* f = pdf_.dir(q);
-    const double rest = kW[q] * rho_w;
-    for (Index n = 0; n < pdf_.stride(); ++n) f[n] = rest;
-  }
-  for (int z = 0; z < g.nz(); ++z)
-    for (int y = 0; y < g.ny(); ++y)
-      for (int x = 0; x < g.nx(); ++x) {
-        const Index n = g.index(x, y, z);
-        if (!flags_.fluid(n)) continue;
-        double rho = 1.0;
-        Vec3 u = Vec3::Zero();
-        init(x, y, z, rho, u);
-        const double inv_eps = has_porosity() ? 1.0 / eps_[std::size_t(n)] : 1.0;
-        for (int q = 0; q < kQ; ++q)
-          pdf_.at(q, n) = equilibrium(q, rho, u.x(), u.y(), u.z(), inv_eps);
-      }
+  with_pdf([&](auto& pdf) {
+    for (int q = 0; q < kQ; ++q)
+      for (Index n = 0; n < pdf.stride(); ++n) pdf.set(q, n, kW[q] * rho_w);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x) {
+          const Index n = g.index(x, y, z);
+          if (!flags_.fluid(n)) continue;
+          double rho = 1.0;
+          Vec3 u = Vec3::Zero();
+          init(x, y, z, rho, u);
+          const double inv_eps = has_porosity() ? 1.0 / eps_[std::size_t(n)] : 1.0;
+          for (int q = 0; q < kQ; ++q)
+            pdf.set(q, n, equilibrium(q, rho, u.x(), u.y(), u.z(), inv_eps));
+        }
+  });
   state_ = AaState::natural;
 }
 
@@ -323,16 +329,20 @@ void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
 void LbmSolver::step() {
   PhaseLap lap;
   if (links_dirty_) rebuild_links();
-  with_forcing([&](const auto& forcing) {
-    for (Body& b : bodies_)
-      if (b.outlet_density > 0) sample_outlet_velocity(pdf_, state_, forcing, b.outlet);
+  with_pdf([&](const auto& pdf) {
+    with_forcing([&](const auto& forcing) {
+      for (Body& b : bodies_)
+        if (b.outlet_density > 0) sample_outlet_velocity(pdf, state_, forcing, b.outlet);
+    });
   });
   lap.to(Phase::lbm_boundaries);
   with_forcing(
       [&](const auto& forcing) {
         const auto collide = [&](const auto& policy) {
-          std::visit([&](const auto& op) { stream_collide(pdf_, state_, op, policy, &runs_); },
-                     settings_.collision);
+          with_pdf([&](auto& pdf) {
+            std::visit([&](const auto& op) { stream_collide(pdf, state_, op, policy, &runs_); },
+                       settings_.collision);
+          });
         };
         if (cell_moments_[0].empty()) return collide(forcing);
         const MomentFields out{
@@ -347,12 +357,14 @@ void LbmSolver::step() {
   const MomentFields moments{
       cell_moments_[0].data(),
       {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
-  for (Body& b : bodies_)
-    b.load = b.outlet_density > 0
-                 ? apply_anti_bounce_back(pdf_, state_, b.links, b.outlet, b.origin)
-             : b.wall_function ? apply_wall_function(pdf_, state_, b.links, b.wall_cells, law,
-                                                     moments, settings_.wall_density, b.origin)
-                               : apply_bounce_back(pdf_, state_, b.links, b.origin);
+  with_pdf([&](auto& pdf) {
+    for (Body& b : bodies_)
+      b.load = b.outlet_density > 0
+                   ? apply_anti_bounce_back(pdf, state_, b.links, b.outlet, b.origin)
+               : b.wall_function ? apply_wall_function(pdf, state_, b.links, b.wall_cells, law,
+                                                       moments, settings_.wall_density, b.origin)
+                                 : apply_bounce_back(pdf, state_, b.links, b.origin);
+  });
   add_mass_sources();
   ++steps_;
   lap.to(Phase::lbm_boundaries);
@@ -384,25 +396,49 @@ double LbmSolver::mass_source_rate() const {
 void LbmSolver::add_mass_sources() {
   // The populations the next step reads (aa_pattern.hpp); the solver owns them, so the cast only
   // undoes read_pointers' const. A few cells: serial, in list order (deterministic).
-  for (const MassSource& m : mass_sources_) {
-    const double* in[kQ];
-    read_pointers(pdf_, state_, m.x, m.y, m.z, in);
-    for (int q = 0; q < kQ; ++q) *const_cast<double*>(in[q]) += kW[q] * m.mass;
-  }
+  with_pdf([&](auto& pdf) {
+    using T = typename std::decay_t<decltype(pdf)>::value_type;
+    for (const MassSource& m : mass_sources_) {
+      const T* in[kQ];
+      read_pointers(pdf, state_, m.x, m.y, m.z, in);
+      for (int q = 0; q < kQ; ++q) {
+        T& slot = *const_cast<T*>(in[q]);
+        slot = PopulationCodec<T>::store(PopulationCodec<T>::load(slot, q) + kW[q] * m.mass, q);
+      }
+    }
+  });
 }
 
 std::vector<double> LbmSolver::level_flux(std::span<const int> level, int levels) const {
   std::vector<AddedMass> added;
   added.reserve(mass_sources_.size());
   for (const MassSource& m : mass_sources_) added.push_back({grid().index(m.x, m.y, m.z), m.mass});
-  return lbm::level_flux(pdf_, state_, flags_, level, levels, added);
+  return with_pdf(
+      [&](const auto& pdf) { return lbm::level_flux(pdf, state_, flags_, level, levels, added); });
 }
 
-void LbmSolver::load_state(const std::vector<double>& populations, AaState s, long steps) {
-  if (Index(populations.size()) != pdf_.size())
-    throw std::invalid_argument("checkpoint holds " + std::to_string(populations.size()) +
-                                " populations, this lattice " + std::to_string(pdf_.size()));
-  std::copy(populations.begin(), populations.end(), pdf_.data());
+void LbmSolver::cell_populations(int x, int y, int z, double (&f)[kQ]) const {
+  with_pdf([&](const auto& pdf) {
+    using T = typename std::decay_t<decltype(pdf)>::value_type;
+    const T* in[kQ];
+    read_pointers(pdf, state_, x, y, z, in);
+    for (int q = 0; q < kQ; ++q) f[q] = PopulationCodec<T>::load(*in[q], q);
+  });
+}
+
+std::vector<double> LbmSolver::stored_slots() const {
+  return with_pdf(
+      [](const auto& pdf) { return std::vector<double>(pdf.data(), pdf.data() + pdf.size()); });
+}
+
+void LbmSolver::load_state(const std::vector<double>& slots, AaState s, long steps) {
+  with_pdf([&](auto& pdf) {
+    using T = typename std::decay_t<decltype(pdf)>::value_type;
+    if (Index(slots.size()) != pdf.size())
+      throw std::invalid_argument("checkpoint holds " + std::to_string(slots.size()) +
+                                  " populations, this lattice " + std::to_string(pdf.size()));
+    std::transform(slots.begin(), slots.end(), pdf.data(), [](double v) { return T(v); });
+  });
   state_ = s;
   steps_ = steps;
 }
@@ -412,18 +448,20 @@ std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rh
   const Grid& g = grid();
   // First bad x of every row (-1: none); rows are independent, so any thread split finds the same.
   std::vector<int> first_bad(std::size_t(g.ny()) * std::size_t(g.nz()), -1);
-  with_forcing([&](const auto& forcing) {
-    for_each_row(g, [&](int y, int z) {
-      for (int x = 0; x < g.nx(); ++x) {
-        if (!flags_.fluid(g.index(x, y, z))) continue;
-        const CellMoments m = cell_moments_at(pdf_, state_, forcing, x, y, z);
-        const double u2 = m.ux * m.ux + m.uy * m.uy + m.uz * m.uz;
-        // Written so that NaN fails every comparison and lands here.
-        if (!(m.rho >= rho_min && m.rho <= rho_max && u2 <= u_max * u_max)) {
-          first_bad[std::size_t(y) + std::size_t(g.ny()) * std::size_t(z)] = x;
-          return;
+  with_pdf([&](const auto& pdf) {
+    with_forcing([&](const auto& forcing) {
+      for_each_row(g, [&](int y, int z) {
+        for (int x = 0; x < g.nx(); ++x) {
+          if (!flags_.fluid(g.index(x, y, z))) continue;
+          const CellMoments m = cell_moments_at(pdf, state_, forcing, x, y, z);
+          const double u2 = m.ux * m.ux + m.uy * m.uy + m.uz * m.uz;
+          // Written so that NaN fails every comparison and lands here.
+          if (!(m.rho >= rho_min && m.rho <= rho_max && u2 <= u_max * u_max)) {
+            first_bad[std::size_t(y) + std::size_t(g.ny()) * std::size_t(z)] = x;
+            return;
+          }
         }
-      }
+      });
     });
   });
   for (std::size_t r = 0; r < first_bad.size(); ++r) {
@@ -437,26 +475,30 @@ std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rh
 
 CellMoments LbmSolver::moments(int x, int y, int z) const {
   CellMoments m{};
-  with_forcing([&](const auto& forcing) { m = cell_moments_at(pdf_, state_, forcing, x, y, z); });
+  with_pdf([&](const auto& pdf) {
+    with_forcing([&](const auto& forcing) { m = cell_moments_at(pdf, state_, forcing, x, y, z); });
+  });
   return m;
 }
 
 void LbmSolver::density(std::vector<double>& rho) const {
   // rho = sum_q f_q whatever the force (cell.hpp): the forcing policy's moments would only add
   // the velocity's work.
-  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, nullptr);
+  with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, &rho, nullptr); });
 }
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
-  with_forcing([&](const auto& f) { moment_fields(pdf_, state_, f, flags_, nullptr, &u); });
+  with_pdf([&](const auto& pdf) {
+    with_forcing([&](const auto& f) { moment_fields(pdf, state_, f, flags_, nullptr, &u); });
+  });
 }
 
 void LbmSolver::raw_velocity(std::vector<Vec3>& u) const {
-  moment_fields(pdf_, state_, NoForce{}, flags_, nullptr, &u);
+  with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, nullptr, &u); });
 }
 
 void LbmSolver::raw_moments(std::vector<double>& rho, std::vector<Vec3>& u) const {
-  moment_fields(pdf_, state_, NoForce{}, flags_, &rho, &u);
+  with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, &rho, &u); });
 }
 
 Vec3 LbmSolver::raw_momentum() const {

@@ -27,6 +27,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace lbdem::lbm {
@@ -43,6 +44,8 @@ struct LbmSettings {
   CollisionModel collision = Bgk{1.0};
   Vec3 body_force = Vec3::Zero();  // uniform force density [lattice units]
   double wall_density = 1.0;       // rho_w of Ladd's moving-wall term [lattice units]
+  // Precision of the stored populations (pdf_field.hpp); the arithmetic is double either way.
+  PopulationStorage storage = PopulationStorage::float64;
 };
 
 class LbmSolver {
@@ -50,11 +53,13 @@ class LbmSolver {
   explicit LbmSolver(const LbmSettings& s);
 
   const LbmSettings& settings() const { return settings_; }
-  const Grid& grid() const { return pdf_.grid(); }
+  const Grid& grid() const { return flags_.grid(); }
   long steps() const { return steps_; }
   AaState state() const { return state_; }
-  const PdfField& pdf() const { return pdf_; }
+  PopulationStorage storage() const { return settings_.storage; }
   const FlagField& flags() const { return flags_; }
+  /// The populations of cell (x, y, z) as the next collision reads them (either AA state).
+  void cell_populations(int x, int y, int z, double (&f)[kQ]) const;
 
   // --- Geometry ---------------------------------------------------------------------------------
   /// A new solid body (id >= 1) with its wall velocity (none: at rest). Box wall faces are bodies
@@ -98,9 +103,13 @@ class LbmSolver {
   /// wall density elsewhere (ghosts, solids); resets to the natural state.
   void initialize(const std::function<void(int x, int y, int z, double& rho, Vec3& u)>& init);
   void step();
-  /// Restores populations, AA state and step count saved from pdf(), state() and steps() (a
-  /// checkpoint); throws std::invalid_argument if the size does not match this lattice.
-  void load_state(const std::vector<double>& populations, AaState s, long steps);
+  /// Every slot of the population array as stored (float slots widened to double: f_q - w_q,
+  /// pdf_field.hpp), padding included: with state() and steps() a checkpoint, and the array that
+  /// bitwise comparisons compare. Widening and narrowing back are exact.
+  std::vector<double> stored_slots() const;
+  /// Restores the slots, AA state and step count saved from stored_slots(), state() and steps();
+  /// throws std::invalid_argument if the size does not match this lattice.
+  void load_state(const std::vector<double>& slots, AaState s, long steps);
 
   /// The watchdog: the first fluid cell (storage order) whose density leaves [rho_min, rho_max]
   /// or whose speed exceeds u_max, or whose moments are not finite; nullopt if all are sane.
@@ -205,8 +214,18 @@ class LbmSolver {
   template <class Fn>
   void with_forcing(Fn&& fn, bool accumulate = false) const;
 
+  /// Calls fn(pdf) with the population array in its storage type.
+  template <class Fn>
+  decltype(auto) with_pdf(Fn&& fn) const {
+    return std::visit([&](const auto& p) -> decltype(auto) { return fn(p); }, pdf_);
+  }
+  template <class Fn>
+  decltype(auto) with_pdf(Fn&& fn) {
+    return std::visit([&](auto& p) -> decltype(auto) { return fn(p); }, pdf_);
+  }
+
   LbmSettings settings_;
-  PdfField pdf_;
+  std::variant<PdfField<double>, PdfField<float>> pdf_;
   FlagField flags_;
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};

@@ -5,7 +5,8 @@
 
 namespace lbdem::lbm {
 
-std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& flags,
+template <class T>
+std::vector<double> level_flux(const PdfField<T>& pdf, AaState s, const FlagField& flags,
                                std::span<const int> level, int levels,
                                std::span<const AddedMass> added) {
   const Grid& g = pdf.grid();
@@ -33,7 +34,7 @@ std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& 
         if (!flags.fluid(g.index(x, y, z))) continue;
         const int to = level_of(x, y, z);
         const double m = source.empty() ? 0.0 : source[std::size_t(g.index(x, y, z))];
-        const double* in[kQ];
+        const T* in[kQ];
         read_pointers(pdf, s, x, y, z, in);
         for (int q = 1; q < kQ; ++q) {
           // The population f_q(y) came from x - c_q (wrapped on periodic axes); links from ghosts
@@ -45,7 +46,7 @@ std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& 
             continue;
           const int from = level_of(sx, sy, sz);
           if (from == to) continue;
-          const double f = *in[q] - kW[q] * m;
+          const double f = PopulationCodec<T>::load(*in[q], q) - kW[q] * m;
           if (from < to)
             for (int k = from + 1; k <= to; ++k) flux[std::size_t(k)] += f;
           else
@@ -54,5 +55,10 @@ std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& 
       }
   return flux;
 }
+
+template std::vector<double> level_flux(const PdfField<double>&, AaState, const FlagField&,
+                                        std::span<const int>, int, std::span<const AddedMass>);
+template std::vector<double> level_flux(const PdfField<float>&, AaState, const FlagField&,
+                                        std::span<const int>, int, std::span<const AddedMass>);
 
 }  // namespace lbdem::lbm

@@ -30,7 +30,8 @@ struct AddedMass {
   Index cell;  // storage index (Grid::index)
   double mass;
 };
-std::vector<double> level_flux(const PdfField& pdf, AaState s, const FlagField& flags,
+template <class T>
+std::vector<double> level_flux(const PdfField<T>& pdf, AaState s, const FlagField& flags,
                                std::span<const int> level, int levels,
                                std::span<const AddedMass> added = {});
 

@@ -1,7 +1,18 @@
 #pragma once
 // Particle distribution functions, structure of arrays, direction-major: f_q of storage cell n is
-// data[q * stride + n] (waLBerla fzyx, FluidX3D index_f). Each direction's array starts on a
+// slot data[q * stride + n] (waLBerla fzyx, FluidX3D index_f). Each direction's array starts on a
 // 64-byte boundary; one array serves the in-place AA update (stream_collide.hpp).
+//
+// Storage precision (PopulationStorage): double, or float with the arithmetic still in double.
+// The kernel moves 2 x 19 populations per cell update and is memory-bound (stream_collide.hpp), so
+// float storage halves the traffic. Float slots hold the shifted value f_q - w_q (the rest
+// equilibrium at rho = 1 subtracted; Skordos 1993, Phys. Rev. E 48, 4823; Lehmann, Krause, Amati,
+// Sega, Harting & Gekle 2022, Phys. Rev. E 106, 015308, "DDF shifting"): f_q - w_q is of the
+// order of w_q times the density and velocity deviations, so the 24-bit mantissa resolves those
+// deviations instead of spending its bits on the constant w_q. Double slots hold f_q itself
+// (bitwise the results and checkpoints of before float existed). PopulationCodec is the one place
+// that converts; every read and write of a population goes through it. w_q = w_qbar, so a slot
+// keeps the same shift whichever of the pair q, qbar the AA pattern stores in it.
 #include "core/types.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/grid.hpp"
@@ -9,40 +20,71 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <string_view>
 
 namespace lbdem::lbm {
 
+enum class PopulationStorage { float64, float32 };
+
+inline std::string_view to_string(PopulationStorage s) {
+  return s == PopulationStorage::float64 ? "double" : "float";
+}
+
+template <class T>
+struct PopulationCodec;
+
+template <>
+struct PopulationCodec<double> {
+  static constexpr PopulationStorage kind = PopulationStorage::float64;
+  static double load(double slot, int) { return slot; }
+  static double store(double f, int) { return f; }
+};
+
+template <>
+struct PopulationCodec<float> {
+  static constexpr PopulationStorage kind = PopulationStorage::float32;
+  static double load(float slot, int q) { return double(slot) + kW[q]; }
+  static float store(double f, int q) { return float(f - kW[q]); }
+};
+
+template <class T>
 class PdfField {
  public:
+  using value_type = T;
+  using Codec = PopulationCodec<T>;
+
   explicit PdfField(const Grid& g) : grid_(g), stride_(padded_stride(g.storage_cells())) {
-    const std::size_t bytes = std::size_t(stride_) * kQ * sizeof(double);
-    data_.reset(static_cast<double*>(std::aligned_alloc(64, bytes)));
+    const std::size_t bytes = std::size_t(stride_) * kQ * sizeof(T);
+    data_.reset(static_cast<T*>(std::aligned_alloc(64, bytes)));
     if (!data_) throw std::bad_alloc();
   }
 
   const Grid& grid() const { return grid_; }
   Index stride() const { return stride_; }
-  double* dir(int q) { return data_.get() + q * stride_; }
-  const double* dir(int q) const { return data_.get() + q * stride_; }
-  double& at(int q, Index n) { return data_[q * stride_ + n]; }
-  double at(int q, Index n) const { return data_[q * stride_ + n]; }
-  /// All kQ * stride values (for bitwise comparisons and checkpoints).
-  const double* data() const { return data_.get(); }
-  double* data() { return data_.get(); }
+  /// Raw slots of direction q (encoded: load/store convert).
+  T* dir(int q) { return data_.get() + q * stride_; }
+  const T* dir(int q) const { return data_.get() + q * stride_; }
+  /// The population in slot q of storage cell n, decoded.
+  double get(int q, Index n) const { return Codec::load(data_[q * stride_ + n], q); }
+  void set(int q, Index n, double f) { data_[q * stride_ + n] = Codec::store(f, q); }
   Index size() const { return kQ * stride_; }
+  /// All kQ * stride raw slots (checkpoints: widened to double and narrowed back, exactly).
+  const T* data() const { return data_.get(); }
+  T* data() { return data_.get(); }
 
  private:
-  // A multiple of 8 doubles keeps every direction 64-byte aligned; the extra 8 make sure the
+  // A multiple of 64 bytes keeps every direction aligned; the extra 64 bytes make sure the
   // arrays are never a whole multiple of 4 KiB apart, where the 19 concurrent streams would alias
   // in L1 (4K aliasing).
-  static Index padded_stride(Index n) { return (n + 7) / 8 * 8 + 8; }
+  static constexpr Index kLine = Index(64 / sizeof(T));
+  static Index padded_stride(Index n) { return (n + kLine - 1) / kLine * kLine + kLine; }
 
   struct Free {
-    void operator()(double* p) const { std::free(p); }
+    void operator()(T* p) const { std::free(p); }
   };
   Grid grid_;
   Index stride_;
-  std::unique_ptr<double[], Free> data_;
+  std::unique_ptr<T[], Free> data_;
 };
 
 }  // namespace lbdem::lbm

@@ -32,17 +32,18 @@ namespace lbdem::lbm {
 /// out[q][i]; n0 is the storage index of cell 0 (for the per-cell force). The loop is vectorised
 /// across cells; with the AA addresses in and out may overlap, but only within one cell, which
 /// reads all 19 values before it writes any, so `omp simd` is safe.
-template <CollisionOperator C, class Forcing>
-inline void collide_cells(const C& coll, const Forcing& forcing, const double* const (&in)[kQ],
-                          double* const (&out)[kQ], Index n0, int count) {
+template <CollisionOperator C, class Forcing, class T>
+inline void collide_cells(const C& coll, const Forcing& forcing, const T* const (&in)[kQ],
+                          T* const (&out)[kQ], Index n0, int count) {
+  using Codec = PopulationCodec<T>;
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
     double f[kQ];
-    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = in[q][i]; });
+    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = Codec::load(in[q][i], q); });
     CellForce force;
     const CellMoments m = forcing.moments(f, n0 + i, force);
     coll.template relax<Forcing::kActive>(f, m, force);
-    static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = f[q]; });
+    static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = Codec::store(f[q], q); });
   }
 }
 
@@ -50,13 +51,13 @@ inline void collide_cells(const C& coll, const Forcing& forcing, const double* c
 /// the caller then applies the boundary links for state after_step(s). Rows are split statically
 /// over the threads and every cell is computed by the same instructions whatever the thread
 /// count: bitwise reproducible.
-template <CollisionOperator C, class Forcing>
-void stream_collide(PdfField& pdf, AaState s, const C& coll, const Forcing& forcing,
+template <CollisionOperator C, class Forcing, class T>
+void stream_collide(PdfField<T>& pdf, AaState s, const C& coll, const Forcing& forcing,
                     const FluidRuns* runs = nullptr) {
   const Grid& g = pdf.grid();
   const auto collide_range = [&](int x0, int x1, int y, int z) {
-    const double* in[kQ];
-    double* out[kQ];
+    const T* in[kQ];
+    T* out[kQ];
     read_pointers(pdf, s, x0, y, z, in);
     write_pointers(pdf, s, x0, y, z, out);
     collide_cells(coll, forcing, in, out, g.index(x0, y, z), x1 - x0);

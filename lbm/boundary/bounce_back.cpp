@@ -44,7 +44,8 @@ void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity
   }
 }
 
-WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+template <class T>
+WallLoad apply_bounce_back(PdfField<T>& pdf, AaState now, const BounceBackLinks& links,
                            const Vec3& origin) {
   // The summand applies its link as a side effect: deterministic_sum calls it once per k.
   return deterministic_sum(
@@ -60,5 +61,9 @@ WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& li
       },
       WallLoad{});
 }
+
+template WallLoad apply_bounce_back(PdfField<double>&, AaState, const BounceBackLinks&,
+                                    const Vec3&);
+template WallLoad apply_bounce_back(PdfField<float>&, AaState, const BounceBackLinks&, const Vec3&);
 
 }  // namespace lbdem::lbm

@@ -58,18 +58,37 @@ struct WallLoad {
   }
 };
 
+/// One slot of a link, read and written as the population it holds (PopulationCodec; the shift
+/// is w_q for either slot of the pair q, qbar). Assigning a slot to a slot is deleted: it would
+/// copy the address, not the value.
+template <class T>
+struct SlotRef {
+  T* p;
+  int q;
+  operator double() const { return PopulationCodec<T>::load(*p, q); }
+  SlotRef& operator=(double f) {
+    *p = PopulationCodec<T>::store(f, q);
+    return *this;
+  }
+  SlotRef& operator=(const SlotRef&) = delete;
+};
+
 /// The two slots of link k for the state a step has just produced (the AA rule of the header
 /// comment, in one place for every link-wise boundary): `from` holds f_q*(x, t), `to` is where
 /// f_qbar(x, t+1) must go.
+template <class T>
 struct LinkSlots {
-  double& from;
-  double& to;
+  SlotRef<T> from;
+  SlotRef<T> to;
 };
-inline LinkSlots link_slots(PdfField& pdf, AaState now, const BounceBackLinks& links,
-                            std::size_t k) {
+template <class T>
+LinkSlots<T> link_slots(PdfField<T>& pdf, AaState now, const BounceBackLinks& links,
+                        std::size_t k) {
   const int q = links.dir[k], o = opposite(q);
-  if (now == AaState::swapped) return {pdf.at(o, links.fluid[k]), pdf.at(q, links.solid[k])};
-  return {pdf.at(q, links.solid[k]), pdf.at(o, links.fluid[k])};
+  T* const fluid_o = pdf.dir(o) + links.fluid[k];
+  T* const solid_q = pdf.dir(q) + links.solid[k];
+  if (now == AaState::swapped) return {{fluid_o, q}, {solid_q, q}};
+  return {{solid_q, q}, {fluid_o, q}};
 }
 
 /// Lists every fluid-to-solid link, one list per body id 1 .. n_bodies (entry k - 1 for body k),
@@ -83,7 +102,8 @@ void set_wall_velocity(BounceBackLinks& links, const Grid& g, const WallVelocity
 /// Applies the links for the state the step has just produced; returns the momentum-exchange
 /// force on the body and its torque about `origin` (lattice coordinates), each link's force
 /// acting at its half-way point, and the mass given to the fluid [lattice units].
-WallLoad apply_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+template <class T>
+WallLoad apply_bounce_back(PdfField<T>& pdf, AaState now, const BounceBackLinks& links,
                            const Vec3& origin = Vec3::Zero());
 
 }  // namespace lbdem::lbm

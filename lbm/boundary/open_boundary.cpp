@@ -41,7 +41,8 @@ PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags
   return o;
 }
 
-WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+template <class T>
+WallLoad apply_anti_bounce_back(PdfField<T>& pdf, AaState now, const BounceBackLinks& links,
                                 const PressureOutlet& outlet, const Vec3& origin) {
   const double rho = outlet.density;
   // The summand applies its link as a side effect: deterministic_sum calls it once per k. Slots
@@ -74,5 +75,10 @@ WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLink
       },
       WallLoad{});
 }
+
+template WallLoad apply_anti_bounce_back(PdfField<double>&, AaState, const BounceBackLinks&,
+                                         const PressureOutlet&, const Vec3&);
+template WallLoad apply_anti_bounce_back(PdfField<float>&, AaState, const BounceBackLinks&,
+                                         const PressureOutlet&, const Vec3&);
 
 }  // namespace lbdem::lbm

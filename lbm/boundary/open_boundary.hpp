@@ -68,8 +68,8 @@ PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags
 /// Samples u(x, t) of every listed cell from state s (before the step), with the step's forcing.
 /// Each cell writes its own entry: the same values at any thread count. A small outlet stays on one
 /// thread, where a parallel region would cost more than the 19 loads per cell.
-template <class Forcing>
-void sample_outlet_velocity(const PdfField& pdf, AaState s, const Forcing& forcing,
+template <class T, class Forcing>
+void sample_outlet_velocity(const PdfField<T>& pdf, AaState s, const Forcing& forcing,
                             PressureOutlet& o) {
   const auto n = static_cast<std::ptrdiff_t>(o.cells.size());
 #pragma omp parallel for schedule(static) if (n > 1024)
@@ -83,7 +83,8 @@ void sample_outlet_velocity(const PdfField& pdf, AaState s, const Forcing& forci
 /// Applies the outlet's links for the state the step has just produced (the same slots as
 /// apply_bounce_back); returns the force and torque on the outlet and the mass it gave the fluid
 /// in this step (negative: outflow) [lattice units], as fixed-block sums.
-WallLoad apply_anti_bounce_back(PdfField& pdf, AaState now, const BounceBackLinks& links,
+template <class T>
+WallLoad apply_anti_bounce_back(PdfField<T>& pdf, AaState now, const BounceBackLinks& links,
                                 const PressureOutlet& outlet, const Vec3& origin = Vec3::Zero());
 
 }  // namespace lbdem::lbm

@@ -148,20 +148,24 @@ namespace {
 // axis, A = 1 and the pseudo-inverse 3 I, so the two differ at round-off (tested).
 constexpr std::size_t kFlatChunk = 64;
 
-WallLoad apply_flat_run(PdfField& pdf, AaState now, BounceBackLinks& links,
+template <class T>
+WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                         const WallFunctionCells& cells, std::size_t u, const WernerWengleCell& law,
                         const MomentFields& moments, double rho_w, const Vec3& origin) {
   const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
   const std::size_t k0 = cells.first[i0];
   const std::size_t c0 = std::size_t(cells.cell[i0]);
-  const double* from[5];
-  double* to[5];
+  using Codec = PopulationCodec<T>;
+  const T* from[5];
+  T* to[5];
+  int slot_q[5];                      // the shift of both slots (PopulationCodec)
   double cx[5], cy[5], cz[5], wc[5];  // c_q and Ladd's factor: corr_q = wc_q c_q . u_s
   for (std::size_t m = 0; m < 5; ++m) {
     const int q = links.dir[k0 + m];
-    auto slots = link_slots(pdf, now, links, k0 + m);
-    from[m] = &slots.from;
-    to[m] = &slots.to;
+    const auto slots = link_slots(pdf, now, links, k0 + m);
+    from[m] = slots.from.p;
+    to[m] = slots.to.p;
+    slot_q[m] = q;
     cx[m] = kCx[q];
     cy[m] = kCy[q];
     cz[m] = kCz[q];
@@ -187,7 +191,7 @@ WallLoad apply_flat_run(PdfField& pdf, AaState now, BounceBackLinks& links,
       double post[5];
       double px = 0, py = 0, pz = 0;
       for (std::size_t m = 0; m < 5; ++m) {
-        post[m] = from[m][j];
+        post[m] = Codec::load(from[m][j], slot_q[m]);
         px += post[m] * cx[m];
         py += post[m] * cy[m];
         pz += post[m] * cz[m];
@@ -216,7 +220,7 @@ WallLoad apply_flat_run(PdfField& pdf, AaState now, BounceBackLinks& links,
       for (std::size_t m = 0; m < 5; ++m) {
         const double cm = wc[m] * (cx[m] * sx + cy[m] * sy + cz[m] * sz);
         corr[m][jj] = cm;
-        to[m][j] = post[m] + cm;
+        to[m][j] = Codec::store(post[m] + cm, slot_q[m]);
         const double out = 2.0 * post[m] + cm;
         fxj += out * cx[m];
         fyj += out * cy[m];
@@ -246,9 +250,11 @@ WallLoad apply_flat_run(PdfField& pdf, AaState now, BounceBackLinks& links,
 
 }  // namespace
 
-WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
+template <class T>
+WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
                              const MomentFields& moments, double rho_w, const Vec3& origin) {
+  using Codec = PopulationCodec<T>;
   const WernerWengleCell cell_law(law);
   // One cell, any staircase shape.
   const auto general = [&](std::size_t i) -> WallLoad {
@@ -256,14 +262,14 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
     // The links' slots are found once: f_q* is read here and the reflected value written
     // below (a cell has at most kQ - 1 links).
     double post[kQ - 1];
-    double* to[kQ - 1];
+    T* to[kQ - 1];
     Vec3 p = Vec3::Zero();  // momentum the links carry into the wall
     for (std::size_t k = k0; k < k1; ++k) {
       const int q = links.dir[k];
-      auto slots = link_slots(pdf, now, links, k);
+      const auto slots = link_slots(pdf, now, links, k);
       post[k - k0] = slots.from;
-      to[k - k0] = &slots.to;
-      p += slots.from * Vec3(kCx[q], kCy[q], kCz[q]);
+      to[k - k0] = slots.to.p;
+      p += post[k - k0] * Vec3(kCx[q], kCy[q], kCz[q]);
     }
     Vec3 slip = Vec3::Zero();
     if (cells.area[i] > 0) {
@@ -304,7 +310,7 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
       const Vec3 cq(kCx[q], kCy[q], kCz[q]);
       const double corr = -2.0 * kW[q] * rho_w * cq.dot(slip) / kCs2;
       links.correction[k] = corr;
-      *to[k - k0] = post[k - k0] + corr;
+      *to[k - k0] = Codec::store(post[k - k0] + corr, q);
       force += (2.0 * post[k - k0] + corr) * cq;
       mass += corr;
     }
@@ -328,5 +334,12 @@ WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
       },
       WallLoad{}, 1);
 }
+
+template WallLoad apply_wall_function(PdfField<double>&, AaState, BounceBackLinks&,
+                                      const WallFunctionCells&, const WernerWengle&,
+                                      const MomentFields&, double, const Vec3&);
+template WallLoad apply_wall_function(PdfField<float>&, AaState, BounceBackLinks&,
+                                      const WallFunctionCells&, const WernerWengle&,
+                                      const MomentFields&, double, const Vec3&);
 
 }  // namespace lbdem::lbm

@@ -111,7 +111,8 @@ WallFunctionCells build_wall_function_cells(const BounceBackLinks& links, bool f
 /// just produced (bounce_back.hpp); returns the wall's force, torque about `origin` and the mass
 /// given to the fluid (round-off), bitwise the same for any thread count. Writes each link's
 /// correction into `links` (the last step's slip terms, for inspection).
-WallLoad apply_wall_function(PdfField& pdf, AaState now, BounceBackLinks& links,
+template <class T>
+WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
                              const MomentFields& moments, double rho_w,
                              const Vec3& origin = Vec3::Zero());

@@ -157,6 +157,7 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
     nu_turbulent_max = c.smagorinsky * c.smagorinsky * c.dx * c.max_speed;
   }
   c.wall_function = fluid.get_bool("wall_function", false);
+  c.population_storage = fluid.get_choice("population_storage", "double", {"double", "float"});
   // A parameter of another operator would be silently ignored: say so.
   if (fluid.has("magic") && c.collision != "trt")
     throw InputError(fluid.path("magic"), "", "only used by fluid.collision = \"trt\"",
@@ -244,6 +245,8 @@ lbm::LbmSettings FluidConfig::lattice() const {
   else
     s.collision = lbm::RegularizedLes::from_tau(tau, smagorinsky);
   for (int a = 0; a < 3; ++a) s.body_force[a] = u.force_density_to_lattice(body_force[a]);
+  s.storage = population_storage == "float" ? lbm::PopulationStorage::float32
+                                            : lbm::PopulationStorage::float64;
   return s;
 }
 
@@ -285,7 +288,9 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
   log.line("gas derived numbers:");
   log.derived("cells per axis", f.cells[0], "",
               "x " + std::to_string(f.cells[1]) + " x " + std::to_string(f.cells[2]) + " = " +
-                  to_text(n) + " cells, " + to_text(n * 152e-6) + " MB of populations");
+                  to_text(n) + " cells, " +
+                  to_text(n * (f.population_storage == "float" ? 76e-6 : 152e-6)) + " MB of " +
+                  f.population_storage + " populations");
   log.derived("cell size dx", f.dx, "m");
   log.derived("gas time step dt", f.dt, "s", "(" + f.dt_from + ")");
   if (sub.dem_per_gas > 1)

@@ -13,11 +13,13 @@
 //   collision = "trt" (magic, default 3/16) | "bgk" | "les" (smagorinsky, default 0.1),
 //   wall_function (false; true: Werner-Wengle's law of the wall on every wall at rest, for LES
 //   whose first cell lies outside the viscous sublayer; lbm/boundary/wall_function.hpp),
+//   population_storage = "double" (default) | "float" (f - w in float, arithmetic in double:
+//   half the memory and the kernel's traffic; lbm/pdf_field.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
 //   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s]} |
 //   {kind = "outlet", pressure = p [Pa, gauge]}.
-// Memory: 19 doubles per cell (152 B) plus the ghost layer.
+// Memory: 19 populations per cell (152 B in double, 76 B in float) plus the ghost layer.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -54,6 +56,7 @@ struct FluidConfig {
   std::string collision = "trt";   // trt | bgk | les
   double magic = 0, smagorinsky = 0;
   bool wall_function = false;
+  std::string population_storage = "double";  // double | float (lbm/pdf_field.hpp)
   Vec3 body_force = Vec3::Zero();        // total force density on the gas, gravity included [N/m^3]
   bool weighs = false;                   // body_force includes the gas's weight rho g
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]

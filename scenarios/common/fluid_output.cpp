@@ -146,9 +146,9 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
 }
 
 void save_fluid(H5Out& f, const lbm::LbmSolver& s) {
-  const double* p = s.pdf().data();
   f.group("/fluid");
-  f.write("/fluid/populations", std::vector<double>(p, p + s.pdf().size()));
+  f.write("/fluid/populations", s.stored_slots());
+  f.attr("population_storage", std::string(lbm::to_string(s.storage())), "/fluid");
   f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");
   f.attr("steps", std::int64_t(s.steps()), "/fluid");
 }
@@ -158,6 +158,15 @@ void load_fluid(const H5In& f, lbm::LbmSolver& s) {
     throw std::runtime_error(
         "the checkpoint holds no gas state (/fluid); was it written by a run "
         "without [fluid]?");
+  // Checkpoints from before float storage carry no attribute: they hold doubles.
+  const std::string stored = f.has_attr("population_storage", "/fluid")
+                                 ? f.attr_string("population_storage", "/fluid")
+                                 : std::string("double");
+  if (stored != lbm::to_string(s.storage()))
+    throw std::runtime_error("the checkpoint holds the gas populations in " + stored +
+                             ", this run stores them in " +
+                             std::string(lbm::to_string(s.storage())) +
+                             "; resume with fluid.population_storage = \"" + stored + "\"");
   s.load_state(f.doubles("/fluid/populations"),
                f.attr_int("aa_swapped", "/fluid") ? lbm::AaState::swapped : lbm::AaState::natural,
                long(f.attr_int("steps", "/fluid")));

@@ -38,7 +38,7 @@ TEST_CASE("LBM: colliding only the fluid runs leaves the fluid as colliding ever
   CHECK(solid_in_runs == 0);
 
   const auto links = build_links(flags, 1);
-  PdfField all(g), only(g);
+  PdfField<double> all(g), only(g);
   for (Index k = 0; k < all.size(); ++k)
     all.data()[k] = only.data()[k] = 0.05 * (1.0 + 0.1 * std::sin(0.37 * double(k)));
   const Bgk op = Bgk::from_tau(0.8);

@@ -18,13 +18,6 @@ using namespace lbdem::lbm;
 
 namespace {
 
-/// Populations of a cell as the next collision sees them.
-void cell_populations(const LbmSolver& lbm, int x, int y, int z, double (&f)[kQ]) {
-  const double* in[kQ];
-  read_pointers(lbm.pdf(), lbm.state(), x, y, z, in);
-  for (int q = 0; q < kQ; ++q) f[q] = *in[q];
-}
-
 double kinetic_energy(const LbmSolver& lbm) {
   std::vector<Vec3> u;
   lbm.velocity(u);
@@ -124,7 +117,7 @@ TEST_CASE("Regularized LES in Couette flow: nu_eff = nu0 + (C_s dx)^2 |S|", "[lb
     const double tol = c_s == 0 ? 1e-9 : 2 * gamma * gamma;
     for (int z = 0; z < h; ++z) {
       double f[kQ];
-      cell_populations(lbm, 0, 0, z, f);
+      lbm.cell_populations(0, 0, z, f);
       const CellMoments m = cell_moments<false>(f, {});
       const double nu_t_cell = op.eddy_viscosity(f, m);
       INFO("C_s " << c_s << " z " << z << " nu_t " << nu_t_cell << " analytic " << nu_t << " rho "
@@ -162,7 +155,7 @@ TEST_CASE("Regularized LES: a uniform body force makes no eddy viscosity", "[lbm
   });
   for (int t = 0; t < 100; ++t) lbm.step();
   double f[kQ];
-  cell_populations(lbm, 1, 0, 1, f);
+  lbm.cell_populations(1, 0, 1, f);
   const CellForce force{0, 1e-5, 0};
   const CellMoments m = cell_moments<true>(f, force);
   const double t = op.effective_tau(f, m, force) - op.tau0;

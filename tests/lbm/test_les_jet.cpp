@@ -86,13 +86,6 @@ double molecular_tau() {
 // of 0.4, where the second-order equilibrium fails.
 constexpr double kRhoMin = 0.9, kRhoMax = 1.1, kSpeedMax = 2.5 * kU;
 
-/// Populations of a cell as the next collision sees them.
-void cell_populations(const LbmSolver& lbm, int x, int y, int z, double (&f)[kQ]) {
-  const double* in[kQ];
-  read_pointers(lbm.pdf(), lbm.state(), x, y, z, in);
-  for (int q = 0; q < kQ; ++q) f[q] = *in[q];
-}
-
 /// The inflow: a top-hat U e_z times 1 + sum_m a cos(m theta - omega_m t + phi_m), m = 0..3,
 /// a = 1 %, each mode at a Strouhal number St = f d / U drawn from [0.3, 0.6] (the jet column's
 /// preferred mode, St ~ 0.3-0.5: Crow & Champagne 1971, J. Fluid Mech. 48, 547) with a random
@@ -143,7 +136,7 @@ void sample_effective_tau(const LbmSolver& lbm, const RegularizedLes& les, JetRe
     for (int y = 0; y < kWidth; ++y)
       for (int x = 0; x < kWidth; ++x) {
         double f[kQ];
-        cell_populations(lbm, x, y, z, f);
+        lbm.cell_populations(x, y, z, f);
         const double tau = les.effective_tau(f, cell_moments<false>(f, {})) - 0.5;
         r.tau_min = std::min(r.tau_min, tau);
         r.tau_max = std::max(r.tau_max, tau);

@@ -55,10 +55,16 @@ TEST_CASE("level flux: planes in a shear-free wave carry the equilibrium's half-
   CHECK_THROWS_AS(lbm.level_flux(level, n), std::invalid_argument);
 }
 
-TEST_CASE("level flux: each region's mass changes by the flux into it, to round-off", "[lbm]") {
+namespace {
+
+/// Steps a closed box with a lid, an obstacle, a body force and mass sources, and returns the
+/// largest |change - flux - added| over the nested regions and five steps (each balance checked
+/// below `bound` as it goes).
+double region_balance(PopulationStorage storage, double bound) {
   const int n = 16;
   LbmSettings s;
   s.nx = s.ny = s.nz = n;
+  s.storage = storage;
   for (int f = 2; f < 6; ++f) s.faces[std::size_t(f)].kind = FaceKind::wall;  // x stays periodic
   s.faces[5].wall_velocity = Vec3(0.05, 0.02, 0);  // a lid sliding in its own plane
   s.collision = Bgk::from_tau(0.6);
@@ -112,21 +118,41 @@ TEST_CASE("level flux: each region's mass changes by the flux into it, to round-
   REQUIRE(added[1] != added[2]);  // the sources straddle surfaces
   std::vector<double> rho_before, rho_after;
   lbm.density(rho_before);
+  double worst = 0;
   for (int t = 0; t < 5; ++t) {
     lbm.step();
     lbm.density(rho_after);
     const std::vector<double> change = region_change(rho_before, rho_after),
                               flux = lbm.level_flux(level, levels);
     double smallest = 1e300;
-    CHECK(std::abs(change[0] - added[0]) < 1e-12);  // the box is closed
+    CHECK(std::abs(change[0] - added[0]) < bound);  // the box is closed
     for (int k = 1; k < levels; ++k) {
       const double balance = change[std::size_t(k)] - flux[std::size_t(k)] - added[std::size_t(k)];
       INFO("step " << t << ", surface " << k << ": " << balance << " of flux "
                    << flux[std::size_t(k)]);
-      CHECK(std::abs(balance) < 1e-12);
+      CHECK(std::abs(balance) < bound);
+      worst = std::max(worst, std::abs(balance));
       smallest = std::min(smallest, std::abs(flux[std::size_t(k)]));
     }
     CHECK(smallest > 1e-3);  // every balance is a real one
     rho_before.swap(rho_after);
   }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("level flux: each region's mass changes by the flux into it, to round-off", "[lbm]") {
+  region_balance(PopulationStorage::float64, 1e-12);
+}
+
+TEST_CASE("level flux: the balance holds to float round-off with float populations", "[lbm]") {
+  // Float storage rounds each stored deviation f - w (at most about 0.2 w here: |u| 0.05, the
+  // density ripple 0.01) to 2^-24 of itself, a cell's mass by at most 1.2e-8 per step, so the
+  // largest region (4,000 cells) by at most 5e-5 and, with round to nearest, typically
+  // sqrt(4,000) times less. A link read without the w shift would move a balance by w_q >= 1/36.
+  // Bound 1e-5, 1/5 of the one-way worst case; measured 5.9e-8.
+  const double worst = region_balance(PopulationStorage::float32, 1e-5);
+  INFO("largest imbalance " << worst);
+  CHECK(worst > 0);  // float rounding is seen: the float path ran
 }

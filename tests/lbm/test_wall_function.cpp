@@ -198,7 +198,7 @@ TEST_CASE("the wall function is bitwise the same at 1 and 2 threads over several
       u = Vec3(0.04 + 0.01 * std::cos(0.4 * y), 0.01 * std::sin(0.5 * x), 0.002 * z);
     });
     for (int t = 0; t < 20; ++t) lbm.step();
-    std::vector<double> out(lbm.pdf().data(), lbm.pdf().data() + lbm.pdf().size());
+    std::vector<double> out = lbm.stored_slots();
     const Vec3 f = lbm.wall_force(lbm.face_body(4));
     out.insert(out.end(), {f.x(), f.y(), f.z()});
     return out;

@@ -187,6 +187,9 @@ TEST_CASE("a resumed gas run equals an uninterrupted one bitwise", "[scenarios][
   SECTION("with particles, 5 DEM steps per gas step") {
     compare(" --config " + mixed + " --set fluid.dt=2e-4", true);
   }
+  SECTION("with particles, float populations") {
+    compare(" --config " + mixed + " --set fluid.population_storage=float", true);
+  }
   fs::remove(mixed);
 }
 
