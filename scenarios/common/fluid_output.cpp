@@ -147,6 +147,8 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
 
 void save_fluid(H5Out& f, const lbm::LbmSolver& s) {
   f.group("/fluid");
+  // The slots as stored (float: f - w, widened exactly). A build from before float storage cannot
+  // misread them: it rejects the run folder's fluid.population_storage key before loading.
   f.write("/fluid/populations", s.stored_slots());
   f.attr("population_storage", std::string(lbm::to_string(s.storage())), "/fluid");
   f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <string>
 
+#include <hdf5.h>
 #include <unistd.h>
 
 #include "core/h5.hpp"
@@ -191,6 +192,49 @@ TEST_CASE("a resumed gas run equals an uninterrupted one bitwise", "[scenarios][
     compare(" --config " + mixed + " --set fluid.population_storage=float", true);
   }
   fs::remove(mixed);
+}
+
+namespace {
+
+/// Replaces (or, with an empty value, removes) a string attribute of a checkpoint's /fluid group:
+/// the checkpoints of other builds, made here by hand.
+void set_storage_attribute(const std::string& file, const std::string& value) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  const hid_t g = H5Gopen2(f, "/fluid", H5P_DEFAULT);
+  if (H5Aexists(g, "population_storage") > 0) H5Adelete(g, "population_storage");
+  if (!value.empty()) {
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, value.size());
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(g, "population_storage", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, type, value.data());
+    H5Aclose(a);
+    H5Sclose(space);
+    H5Tclose(type);
+  }
+  H5Gclose(g);
+  H5Fclose(f);
+}
+
+}  // namespace
+
+TEST_CASE("a resume checks the checkpoint's population storage", "[scenarios][fluid]") {
+  const std::string out = tmpdir("storage");
+  REQUIRE(cli("run box --out " + out + kChannel + " --set run.end_time=5.0").code == 0);
+  const std::string ck = out + "/checkpoint.h5";
+  CHECK(lbdem::H5In(ck).attr_string("population_storage", "/fluid") == "double");
+  // Float slots (f - w) read as double populations would lose w: refused, naming the fix.
+  set_storage_attribute(ck, "float");
+  const auto bad = cli("run --resume " + out + " --set run.end_time=10.0");
+  CHECK(bad.code != 0);
+  CHECK(bad.err.find("holds the gas populations in float, this run stores them in double") !=
+        std::string::npos);
+  // A checkpoint from before float storage has no attribute and holds doubles: it resumes.
+  set_storage_attribute(ck, "");
+  CHECK(cli("run --resume " + out + " --set run.end_time=10.0").code == 0);
+  CHECK(lbdem::H5In(ck).attr_string("population_storage", "/fluid") == "double");
+  fs::remove_all(out);
 }
 
 TEST_CASE("inlet and outlet faces report their mass flow in kg/s", "[scenarios][fluid]") {
