@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <vector>
 
 namespace lbdem::lbm {
 
@@ -148,24 +150,20 @@ namespace {
 // axis, A = 1 and the pseudo-inverse 3 I, so the two differ at round-off (tested).
 constexpr std::size_t kFlatChunk = 64;
 
-template <class T>
-WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
-                        const WallFunctionCells& cells, std::size_t u, const WernerWengleCell& law,
-                        const MomentFields& moments, double rho_w, const Vec3& origin) {
+// The run's kernel on double populations: from[m][j] holds f_q* of link m of cell j, to[m][j]
+// receives the reflected value. Not inlined, so that it is compiled (and vectorised) once for both
+// storages: inlined into the float caller, GCC 12 left its cell loop scalar.
+[[gnu::noinline]] WallLoad flat_run_kernel(const double* const (&from)[5], double* const (&to)[5],
+                                           BounceBackLinks& links, const WallFunctionCells& cells,
+                                           std::size_t u, const WernerWengleCell& law,
+                                           const MomentFields& moments, double rho_w,
+                                           const Vec3& origin) {
   const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
   const std::size_t k0 = cells.first[i0];
   const std::size_t c0 = std::size_t(cells.cell[i0]);
-  using Codec = PopulationCodec<T>;
-  const T* from[5];
-  T* to[5];
-  int slot_q[5];                      // the shift of both slots (PopulationCodec)
   double cx[5], cy[5], cz[5], wc[5];  // c_q and Ladd's factor: corr_q = wc_q c_q . u_s
   for (std::size_t m = 0; m < 5; ++m) {
     const int q = links.dir[k0 + m];
-    const auto slots = link_slots(pdf, now, links, k0 + m);
-    from[m] = slots.from.p;
-    to[m] = slots.to.p;
-    slot_q[m] = q;
     cx[m] = kCx[q];
     cy[m] = kCy[q];
     cz[m] = kCz[q];
@@ -191,7 +189,7 @@ WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
       double post[5];
       double px = 0, py = 0, pz = 0;
       for (std::size_t m = 0; m < 5; ++m) {
-        post[m] = Codec::load(from[m][j], slot_q[m]);
+        post[m] = from[m][j];
         px += post[m] * cx[m];
         py += post[m] * cy[m];
         pz += post[m] * cz[m];
@@ -220,7 +218,7 @@ WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
       for (std::size_t m = 0; m < 5; ++m) {
         const double cm = wc[m] * (cx[m] * sx + cy[m] * sy + cz[m] * sz);
         corr[m][jj] = cm;
-        to[m][j] = Codec::store(post[m] + cm, slot_q[m]);
+        to[m][j] = post[m] + cm;
         const double out = 2.0 * post[m] + cm;
         fxj += out * cx[m];
         fyj += out * cy[m];
@@ -246,6 +244,45 @@ WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
   load.torque = torque_sum;
   load.mass = mass_sum;
   return load;
+}
+
+/// Points the kernel at the run's slots; float slots are decoded into double scratch first and
+/// encoded back after.
+template <class T>
+WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
+                        const WallFunctionCells& cells, std::size_t u, const WernerWengleCell& law,
+                        const MomentFields& moments, double rho_w, const Vec3& origin) {
+  const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
+  const std::size_t k0 = cells.first[i0];
+  const double* from[5];
+  double* to[5];
+  if constexpr (std::is_same_v<T, double>) {
+    for (std::size_t m = 0; m < 5; ++m) {
+      const auto slots = link_slots(pdf, now, links, k0 + m);
+      from[m] = slots.from.p;
+      to[m] = slots.to.p;
+    }
+    return flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
+  } else {
+    using Codec = PopulationCodec<T>;
+    thread_local std::vector<double> scratch;
+    scratch.resize(10 * n);
+    T* slot_to[5];
+    int slot_q[5];
+    for (std::size_t m = 0; m < 5; ++m) {
+      const auto slots = link_slots(pdf, now, links, k0 + m);
+      slot_q[m] = links.dir[k0 + m];
+      slot_to[m] = slots.to.p;
+      double* in = scratch.data() + m * n;
+      for (std::size_t j = 0; j < n; ++j) in[j] = Codec::load(slots.from.p[j], slot_q[m]);
+      from[m] = in;
+      to[m] = scratch.data() + (5 + m) * n;
+    }
+    const WallLoad load = flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
+    for (std::size_t m = 0; m < 5; ++m)
+      for (std::size_t j = 0; j < n; ++j) slot_to[m][j] = Codec::store(to[m][j], slot_q[m]);
+    return load;
+  }
 }
 
 }  // namespace
