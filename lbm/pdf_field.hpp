@@ -37,14 +37,12 @@ struct PopulationCodec;
 
 template <>
 struct PopulationCodec<double> {
-  static constexpr PopulationStorage kind = PopulationStorage::float64;
   static double load(double slot, int) { return slot; }
   static double store(double f, int) { return f; }
 };
 
 template <>
 struct PopulationCodec<float> {
-  static constexpr PopulationStorage kind = PopulationStorage::float32;
   static double load(float slot, int q) { return double(slot) + kW[q]; }
   static float store(double f, int q) { return float(f - kW[q]); }
 };
