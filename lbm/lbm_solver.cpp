@@ -4,9 +4,8 @@
 
 #include "core/error.hpp"
 #include "lbm/equilibrium.hpp"
-#include "lbm/forcing/porous.hpp"
 #include "lbm/moments.hpp"
-#include "lbm/stream_collide.hpp"
+#include "lbm/solver_passes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -187,7 +186,7 @@ void LbmSolver::initialize(
           double rho = 1.0;
           Vec3 u = Vec3::Zero();
           init(x, y, z, rho, u);
-          const double inv_eps = has_porosity() ? 1.0 / eps_[std::size_t(n)] : 1.0;
+          const double inv_eps = has_porosity() ? inv_eps_[std::size_t(n)] : 1.0;
           for (int q = 0; q < kQ; ++q)
             pdf.set(q, n, equilibrium(q, rho, u.x(), u.y(), u.z(), inv_eps));
         }
@@ -209,6 +208,7 @@ void LbmSolver::set_cell_force(int x, int y, int z, const Vec3& f) {
 void LbmSolver::enable_porosity() {
   if (has_porosity()) return;
   eps_.assign(std::size_t(grid().storage_cells()), 1.0);
+  inv_eps_.assign(std::size_t(grid().storage_cells()), 1.0);
   alpha_.assign(std::size_t(grid().storage_cells()), 0.0);
 }
 
@@ -220,6 +220,7 @@ void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha)
     throw std::invalid_argument("Darcy rate must be >= 0, got " + std::to_string(alpha));
   const auto n = std::size_t(grid().index(x, y, z));
   eps_[n] = eps;
+  inv_eps_[n] = 1.0 / eps;
   alpha_[n] = alpha;
 }
 
@@ -261,6 +262,7 @@ void LbmSolver::set_porosity_field(std::span<const double> eps, std::span<const 
               std::to_string(z) + "): eps = " + std::to_string(eps[c]) +
               ", alpha = " + std::to_string(alpha[c]) + "; need 0 < eps <= 1, alpha >= 0");
         eps_[std::size_t(n)] = eps[c];
+        inv_eps_[std::size_t(n)] = 1.0 / eps[c];
         alpha_[std::size_t(n)] = alpha[c];
       }
 }
@@ -299,33 +301,6 @@ void LbmSolver::porosity(std::vector<double>& eps) const {
       }
 }
 
-template <class Fn>
-void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
-  const Vec3& b = settings_.body_force;
-  const CellForce uniform{b.x(), b.y(), b.z()};
-  if (has_porosity()) {
-    const auto porous = [&](auto applied) {
-      using Base = decltype(applied);
-      if (accumulate && has_velocity_sum()) {
-        PorousMedium<Base, true> policy{applied, eps_.data(), alpha_.data(), beta_};
-        for (int a = 0; a < 3; ++a) policy.u_sum[a] = u_sum_[std::size_t(a)].data();
-        fn(policy);
-      } else {
-        fn(PorousMedium<Base>{applied, eps_.data(), alpha_.data(), beta_});
-      }
-    };
-    if (has_force_field())
-      porous(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
-    else
-      porous(UniformForce{uniform});
-  } else if (has_force_field())
-    fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
-  else if (!b.isZero())
-    fn(UniformForce{uniform});
-  else
-    fn(NoForce{});
-}
-
 void LbmSolver::step() {
   PhaseLap lap;
   if (links_dirty_) rebuild_links();
@@ -336,21 +311,7 @@ void LbmSolver::step() {
     });
   });
   lap.to(Phase::lbm_boundaries);
-  with_forcing(
-      [&](const auto& forcing) {
-        const auto collide = [&](const auto& policy) {
-          with_pdf([&](auto& pdf) {
-            std::visit([&](const auto& op) { stream_collide(pdf, state_, op, policy, &runs_); },
-                       settings_.collision);
-          });
-        };
-        if (cell_moments_[0].empty()) return collide(forcing);
-        const MomentFields out{
-            cell_moments_[0].data(),
-            {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
-        collide(StoreMoments<std::decay_t<decltype(forcing)>>{forcing, out});
-      },
-      true);
+  std::visit([&](const auto& op) { collide_pass(op); }, settings_.collision);
   lap.to(Phase::lbm_collide_stream);
   state_ = after_step(state_);
   const WernerWengle law{viscosity(settings_.collision)};

@@ -213,6 +213,9 @@ class LbmSolver {
   /// `accumulate`, a porous policy also adds to the velocity sums (the collision of a step only).
   template <class Fn>
   void with_forcing(Fn&& fn, bool accumulate = false) const;
+  /// The collision of one step with operator op over the fluid runs (solver_passes.hpp).
+  template <class Op>
+  void collide_pass(const Op& op);
 
   /// Calls fn(pdf) with the population array in its storage type.
   template <class Fn>
@@ -231,7 +234,8 @@ class LbmSolver {
   std::array<int, 6> face_body_{};
   std::array<std::vector<double>, 3> force_;
   std::vector<MassSource> mass_sources_;
-  std::vector<double> eps_, alpha_;                   // per storage cell, when porosity is enabled
+  std::vector<double> eps_, alpha_;  // per storage cell, when porosity is enabled
+  std::vector<double> inv_eps_;      // 1 / eps_, what the kernel reads (no division per cell)
   mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
   // rho and u / eps of the last collision per storage cell, kept while a body has the wall
   // function (forcing/moment_store.hpp); empty otherwise.

@@ -6,6 +6,7 @@
 // populations from 19 arrays: on the jet mill those scattered loads cost more than the collision
 // itself (the wall function took 58 % of a gas run, the collision 41 %; perf put the time on the
 // loads). The stores are unconditional, so the cell loop stays vectorised.
+#include "core/types.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/d3q19.hpp"
 

@@ -35,14 +35,16 @@ namespace lbdem::lbm {
 
 /// Base: the applied-force policy (guo.hpp: UniformForce or FieldForce). kSum: add to the velocity
 /// sums; a compile-time choice, since a store under a run-time test kept GCC 12 from vectorising
-/// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous).
-template <class Base, bool kSum = false>
+/// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous). kForchheimer: beta may be
+/// nonzero; without it the two square roots of |u| and of the quadratic's root drop out (beta = 0
+/// gives scale = 1 / (2 c0) exactly), and the vector loop is bound by its divider (cell.hpp).
+template <class Base, bool kSum = false, bool kForchheimer = false>
 struct PorousMedium {
   static constexpr bool kActive = true;
   Base applied;
-  const double* eps;    // fluid fraction per storage cell, 0 < eps <= 1
-  const double* alpha;  // Darcy drag mu eps / K per storage cell [lattice units], >= 0
-  double beta = 0;      // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
+  const double* inv_eps;  // 1 / fluid fraction per storage cell, >= 1 (stored: no division)
+  const double* alpha;    // Darcy drag mu eps / K per storage cell [lattice units], >= 0
+  double beta = 0;        // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
   // With kSum, sums of the intrinsic velocity u / eps per storage cell (x, y, z), added to by every
   // collision that uses this policy (LbmSolver::enable_velocity_sum): the coupling's record of the
   // velocities the gas's drag acted on, without a second pass over the populations.
@@ -53,20 +55,26 @@ struct PorousMedium {
                                              CellForce& force) const {
     const CellForce g = applied.at(n);
     CellMoments m = cell_moments<true>(f, g);  // u = v here
-    const double a = alpha[n] / m.rho;         // GZ's rate eps nu / K
-    const double c0 = 0.5 * (1.0 + 0.5 * a), c1 = 0.5 * beta;
-    const double v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
-    const double scale = 1.0 / (c0 + std::sqrt(c0 * c0 + c1 * v));
+    const double a = alpha[n] * m.inv_rho;     // GZ's rate eps nu / K
+    const double c0 = 0.5 * (1.0 + 0.5 * a);
+    double v = 0.0, scale;
+    if constexpr (kForchheimer) {
+      v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+      scale = 1.0 / (c0 + std::sqrt(c0 * c0 + 0.5 * beta * v));
+    } else {
+      scale = 1.0 / (2.0 * c0);
+    }
     m.ux *= scale;
     m.uy *= scale;
     m.uz *= scale;
-    m.inv_eps = 1.0 / eps[n];
+    m.inv_eps = inv_eps[n];
     if constexpr (kSum) {
       u_sum[0][n] += m.ux * m.inv_eps;
       u_sum[1][n] += m.uy * m.inv_eps;
       u_sum[2][n] += m.uz * m.inv_eps;
     }
-    const double drag = m.rho * (a + beta * v * scale);  // rho (alpha + beta |u|)
+    double drag = m.rho * a;  // rho (alpha + beta |u|)
+    if constexpr (kForchheimer) drag = m.rho * (a + beta * v * scale);
     force = {g.fx - drag * m.ux, g.fy - drag * m.uy, g.fz - drag * m.uz};
     return m;
   }
