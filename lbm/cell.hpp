@@ -2,19 +2,24 @@
 // Per-cell state shared by the kernel, the collision operators and the moment fields.
 #include "lbm/d3q19.hpp"
 
+#include <limits>
+
 namespace lbdem::lbm {
 
 /// Density and the physical velocity of one cell [lattice units].
 /// inv_eps = 1/eps of the porous (Guo & Zhao 2002) form: it multiplies the terms of second order
 /// in u of the equilibrium and of the Guo source; 1 without porosity. inv_rho = 1/rho, kept from
-/// cell_moments so that the porous drag and the LES eddy viscosity multiply instead of dividing:
-/// the jet mill's kernel is bound by its divisions and square roots (one AVX2 vdivpd of 4 doubles
-/// takes the divider about 8 cycles, a vsqrtpd about 12; 7 divisions and 4 roots per cell were
-/// about a quarter of the kernel's time, perf 2026-11-24).
+/// cell_moments so that the porous drag and the LES eddy viscosity multiply instead of dividing.
+/// Why: the jet mill's porous LES kernel spent 7 divisions and 4 square roots per cell; at the
+/// divider's throughput (an AVX2 vdivpd of 4 doubles about 8 cycles, a vsqrtpd about 12) that is
+/// an estimated quarter of its time. Down to 3 and 2 (with porous.hpp and regularized_les.hpp),
+/// its stream-collide took 24.3 s instead of 31.0 s on 1.5 ms of cg8_p5bar (2 threads,
+/// 2026-11-24).
 struct CellMoments {
   double rho, ux, uy, uz;
   double inv_eps = 1.0;
-  double inv_rho = 0.0;  // set by cell_moments
+  // Set by cell_moments; NaN otherwise, so that a hand-built CellMoments cannot pass silently.
+  double inv_rho = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Body force density acting on one cell [lattice units: mass / (cell dt^2)].

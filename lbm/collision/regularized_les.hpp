@@ -105,9 +105,9 @@ struct RegularizedLes {
     const double norm =
         std::sqrt(xx * xx + yy * yy + zz * zz + 2.0 * (xy * xy + xz * xz + yz * yz));
     // The root (tau0 + sqrt(tau0^2 + X)) / 2, X = 18 sqrt(2) C_s^2 |Pi^c| / rho: a sum of two
-    // positive numbers, so without cancellation, and exactly tau0 at X = 0 (the square root of a
-    // rounded square is exact in IEEE arithmetic). One division per cell fewer than the form
-    // tau0 + X / (2 (tau0 + sqrt(...))), which differs from it by round-off.
+    // positive numbers, so without cancellation, and exactly tau0 at X = 0 (the correctly rounded
+    // square root of the rounded tau0^2 is tau0 in IEEE binary arithmetic). One division per cell
+    // fewer than the form tau0 + X / (2 (tau0 + sqrt(...))), which differs from it by round-off.
     const double x = 18.0 * std::sqrt(2.0) * smagorinsky * smagorinsky * norm * m.inv_rho;
     return 0.5 * (tau0 + std::sqrt(tau0 * tau0 + x));
   }

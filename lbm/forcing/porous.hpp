@@ -35,10 +35,11 @@ namespace lbdem::lbm {
 
 /// Base: the applied-force policy (guo.hpp: UniformForce or FieldForce). kSum: add to the velocity
 /// sums; a compile-time choice, since a store under a run-time test kept GCC 12 from vectorising
-/// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous). kForchheimer: beta may be
-/// nonzero; without it the two square roots of |u| and of the quadratic's root drop out (beta = 0
-/// gives scale = 1 / (2 c0) exactly), and the vector loop is bound by its divider (cell.hpp).
-template <class Base, bool kSum = false, bool kForchheimer = false>
+/// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous). kForchheimer = false drops the
+/// two square roots of |u| and of the quadratic's root (beta = 0 gives scale = 1 / (2 c0)
+/// exactly): the solver chooses it where beta = 0, which the coupling always has (cell.hpp: the
+/// divisions and roots of this kernel).
+template <class Base, bool kSum = false, bool kForchheimer = true>
 struct PorousMedium {
   static constexpr bool kActive = true;
   Base applied;
