@@ -22,8 +22,9 @@ before it built anything (/proc/self/status, core/memory.hpp), divided by the pa
 interior cells; the peak (set-up temporaries included, less the same base) is in the CSV too. For
 the LBM the table sets it beside what the solver's fields need: 19 x 8 B of populations (AA
 pattern, one lattice), 3 x 8 B of force, 3 x 8 B of porosity, its reciprocal and drag, 3 x 8 B
-of velocity sums and a 1 B flag per stored cell, stored cells being (N + 2)^3 with the ghost layer. At small sizes
-the fixed cost of the process (OpenMP thread stacks, about 10 MB) dominates.
+of velocity sums and a 1 B flag per stored cell, stored cells being (N + 2)^3 with the ghost
+layer. At small sizes the fixed cost of the process (OpenMP thread stacks, about 10 MB)
+dominates.
 Writes DIR/size.csv (after every size) and DIR/size.png (default DIR:
 $TMPDIR/lbdem-bench/size-STAMP). Exit 0; 1 if a run failed (the others stay in the table); 2 on
 bad input.
