@@ -58,12 +58,14 @@ struct PorousMedium {
     CellMoments m = cell_moments<true>(f, g);  // u = v here
     const double a = alpha[n] * m.inv_rho;     // GZ's rate eps nu / K
     const double c0 = 0.5 * (1.0 + 0.5 * a);
-    double v = 0.0, scale;
+    double scale, rate;  // rate: alpha + beta |u| over rho
     if constexpr (kForchheimer) {
-      v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+      const double v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
       scale = 1.0 / (c0 + std::sqrt(c0 * c0 + 0.5 * beta * v));
+      rate = a + beta * v * scale;
     } else {
       scale = 1.0 / (2.0 * c0);
+      rate = a;
     }
     m.ux *= scale;
     m.uy *= scale;
@@ -74,8 +76,7 @@ struct PorousMedium {
       u_sum[1][n] += m.uy * m.inv_eps;
       u_sum[2][n] += m.uz * m.inv_eps;
     }
-    double drag = m.rho * a;  // rho (alpha + beta |u|)
-    if constexpr (kForchheimer) drag = m.rho * (a + beta * v * scale);
+    const double drag = m.rho * rate;  // rho (alpha + beta |u|)
     force = {g.fx - drag * m.ux, g.fy - drag * m.uy, g.fz - drag * m.uz};
     return m;
   }
