@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/deterministic_sum.hpp"
+#include "core/parallel_for.hpp"
 #include "coupling/drag/coarse_grain_drag.hpp"
 #include "lbm/d3q19.hpp"
 
@@ -75,13 +76,25 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
     gas_.raw_moments(pressure_, cell_vec_);
   else
     gas_.raw_velocity(cell_vec_);
-  if (s_.two_way)
-    for (std::size_t c = 0; c < cell_vec_.size(); ++c) cell_vec_[c] /= eps_[c];
+  const auto ncell = cell_vec_.size();
+  const bool many_cells = ncell >= std::size_t(ParticleKernel::kMinParallelCells);
+  if (s_.two_way) {
+#pragma omp parallel for schedule(static) if (many_cells)
+    for (std::size_t c = 0; c < ncell; ++c) cell_vec_[c] /= eps_[c];
+  }
   const double to_si = units_.velocity_to_si(1.0);
   // eps at the particle through the same kernel as everything else the gas gives it; the slip that
-  // sets beta_p only needs a local value (the exchange is exact whatever beta_p is).
-  kernel_.interpolate(eps_, eps_p_);
+  // sets beta_p only needs a local value (the exchange is exact whatever beta_p is). With grad p,
+  // eps and grad p go through the kernel together (one filter over four components).
   kernel_.interpolate_local(cell_vec_, u_p_);
+  if (s_.pressure_gradient) {
+    density_to_pressure(pressure_);
+    kernel_.pressure_gradient(pressure_, grad_p_);
+    kernel_.interpolate(eps_, grad_p_, eps_p_, f_grad_);
+  } else {
+    kernel_.interpolate(eps_, eps_p_);
+    f_grad_.assign(np, Vec3::Zero());
+  }
 
   // Drag coefficients (the law of one original times l^3, coarse_grain_drag.hpp), held over the
   // interval, and the particle velocities they act on.
@@ -90,11 +103,12 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   const double mu = s_.viscosity, rho_f = units_.rho;
   std::visit(
       [&](const auto& law) {
-        for (std::size_t k = 0; k < np; ++k) {
+        // The law throws on a non-finite slip (a diverged gas): the lowest particle's error.
+        parallel_for(np, ParticleKernel::kMinParallelParticles, [&](std::size_t k) {
           const DragInput in{rho_f, mu, std::clamp(eps_p_[k], s_.eps_min, 1.0), 2 * p.radius[k]};
           const double slip = (to_si * u_p_[k] - v_p_[k]).norm();
           beta_[k] = parcel_drag_coefficient(law, in, s_.size_factor, slip);
-        }
+        });
       },
       s_.drag);
   double rate = 0, eps_sum = 0;
@@ -106,11 +120,8 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   report_.mean_eps_particles = np ? eps_sum / double(np) : 1.0;
 
   // Pressure-gradient force -V_p grad p at the particles.
-  f_grad_.assign(np, Vec3::Zero());
   if (s_.pressure_gradient) {
-    density_to_pressure(pressure_);
-    kernel_.pressure_gradient(pressure_, cell_vec_);
-    kernel_.interpolate(cell_vec_, f_grad_);
+#pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
     for (std::size_t k = 0; k < np; ++k)
       f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);
   }
@@ -121,14 +132,15 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
 
   // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
   // explicit rest, sum_p (beta_p v_p - F_gradp,p) K_p / dx^3 - (1 - eps) rho_f g (see the header).
-  kernel_.deposit(beta_, cell_scalar_);  // A_c [kg/(m^3 s)]
   work_.resize(np);
+#pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
   for (std::size_t k = 0; k < np; ++k) work_[k] = beta_[k] * v_p_[k] - f_grad_[k];
-  kernel_.deposit(work_, cell_vec_);
-  const double drag_to_lattice = units_.dt / units_.rho;  // (A / eps) [SI] -> alpha [lattice]
+  kernel_.deposit(beta_, work_, cell_scalar_, cell_vec_);  // A_c [kg/(m^3 s)] and the rest
+  const double drag_to_lattice = units_.dt / units_.rho;   // (A / eps) [SI] -> alpha [lattice]
   const double force_to_lattice = units_.force_density_to_lattice(1.0);
-  force_lat_.resize(cell_vec_.size());
-  for (std::size_t c = 0; c < eps_.size(); ++c) {
+  force_lat_.resize(ncell);
+#pragma omp parallel for schedule(static) if (many_cells)
+  for (std::size_t c = 0; c < ncell; ++c) {
     alpha_[c] = cell_scalar_[c] / eps_[c] * drag_to_lattice;
     force_lat_[c] = force_to_lattice * (cell_vec_[c] - (1 - eps_[c]) * s_.gas_weight);
     if (!source_lat_.empty()) force_lat_[c] += source_lat_[c];
@@ -175,6 +187,7 @@ const ExchangeReport& Coupler::end_interval(dem::ParticleArrays& p) {
   kernel_.interpolate(u_sum_, u_p_);
   const double to_si = units_.velocity_to_si(1.0) * inv;
   acc_.resize(p.size());
+#pragma omp parallel for schedule(static) if (acc_.size() >= ParticleKernel::kMinParallelParticles)
   for (std::size_t k = 0; k < acc_.size(); ++k) {
     acc_[k] = beta_[k] * (to_si * u_p_[k] - v_p_[k]);
     p.external[k] = acc_[k] + f_grad_[k];

@@ -67,6 +67,8 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
   for (double& g : taps_) g /= sum;
 
   const auto ncell = std::size_t(grid_.cells());
+  if (ncell > std::size_t(UINT32_MAX))
+    throw std::invalid_argument("ParticleKernel: more than 2^32 cells");
   gas_.assign(ncell, 1);
   if (!solid.empty()) {
     require_size(solid.size(), ncell, "solid mask");
@@ -87,7 +89,7 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
       }
   }
   std::vector<double> m(gas_.begin(), gas_.end()), z;
-  filter(m, z);
+  filter(m, z, 1);
   inv_z_.resize(ncell);
   for (std::size_t c = 0; c < ncell; ++c) inv_z_[c] = z[c] > 0 ? 1.0 / z[c] : 0.0;
 }
@@ -102,41 +104,64 @@ std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags
   return solid;
 }
 
+std::vector<int> ParticleKernel::active_planes(const std::uint8_t* planes, std::vector<double>& out,
+                                               int nc) const {
+  const int nz = grid_.nz();
+  const auto plane = std::size_t(grid_.nx()) * std::size_t(grid_.ny()) * std::size_t(nc);
+  std::vector<int> active;
+  active.reserve(std::size_t(nz));
+  for (int z = 0; z < nz; ++z) {
+    if (!planes || planes[z])
+      active.push_back(z);
+    else
+      std::fill(out.begin() + std::ptrdiff_t(std::size_t(z) * plane),
+                out.begin() + std::ptrdiff_t(std::size_t(z + 1) * plane), 0.0);
+  }
+  return active;
+}
+
 void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
-                                 const std::uint8_t* planes) const {
-  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz(), h = half_;
+                                 const std::uint8_t* planes, int nc) const {
+  const int nx = grid_.nx(), ny = grid_.ny(), h = half_;
   out.resize(in.size());
-  if (axis != 0) return filter_planes(in, out, axis, planes);
+  // The planes to filter, listed so that the threads share them evenly (a bed fills the lower
+  // planes of its column, which a static split over all planes would give one thread); the
+  // others read 0.
+  const std::vector<int> active = active_planes(planes, out, nc);
+  if (axis != 0) return filter_planes(in, out, axis, active, nc);
   const bool wrap_x = grid_.periodic(0);
+  const int na = int(active.size());
+  const auto len = std::size_t(nx) * std::size_t(nc);  // a row's values
+  const auto halo = std::size_t(h) * std::size_t(nc);
 #pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (int z = 0; z < nz; ++z)
+  for (int a = 0; a < na; ++a)
     for (int y = 0; y < ny; ++y) {
-      double* o = out.data() + cell(0, y, z);
-      if (planes && !planes[z]) {
-        for (int x = 0; x < nx; ++x) o[x] = 0;
-        continue;
-      }
+      const int z = active[std::size_t(a)];
+      const std::size_t at = std::size_t(cell(0, y, z)) * std::size_t(nc);
+      double* o = out.data() + at;
       // The row with H cells of halo on each side (wrapped, or zero beyond a non-periodic face:
       // the taps there are the ones the tap list leaves out), so that each tap is one
-      // contiguous, vectorisable sweep; taps are added in the same order, k = -H..H.
+      // contiguous, vectorisable sweep over all components; taps are added in the same order,
+      // k = -H..H.
       thread_local std::vector<double> pad;
-      pad.resize(std::size_t(nx + 2 * h));
-      const double* row = in.data() + cell(0, y, z);
-      std::copy(row, row + nx, pad.begin() + h);
-      for (int i = 1; i <= h; ++i) {
-        double lo = 0, hi = 0;
-        if (wrap_x) {
-          lo = row[((-i % nx) + nx) % nx];
-          hi = row[(nx - 1 + i) % nx];
+      pad.resize(len + 2 * halo);
+      const double* row = in.data() + at;
+      std::copy(row, row + len, pad.begin() + std::ptrdiff_t(halo));
+      for (int i = 1; i <= h; ++i)
+        for (int m = 0; m < nc; ++m) {
+          double lo = 0, hi = 0;
+          if (wrap_x) {
+            lo = row[std::size_t(((-i % nx) + nx) % nx) * std::size_t(nc) + std::size_t(m)];
+            hi = row[std::size_t((nx - 1 + i) % nx) * std::size_t(nc) + std::size_t(m)];
+          }
+          pad[std::size_t(h - i) * std::size_t(nc) + std::size_t(m)] = lo;
+          pad[std::size_t(nx - 1 + h + i) * std::size_t(nc) + std::size_t(m)] = hi;
         }
-        pad[std::size_t(h - i)] = lo;
-        pad[std::size_t(nx - 1 + h + i)] = hi;
-      }
-      for (int x = 0; x < nx; ++x) o[x] = 0;
+      for (std::size_t x = 0; x < len; ++x) o[x] = 0;
       for (int k = -h; k <= h; ++k) {
         const double g = taps_[std::size_t(std::abs(k))];
-        const double* src = pad.data() + h + k;
-        for (int x = 0; x < nx; ++x) o[x] += g * src[x];
+        const double* src = pad.data() + std::ptrdiff_t(h + k) * nc;
+        for (std::size_t x = 0; x < len; ++x) o[x] += g * src[x];
       }
     }
 }
@@ -146,24 +171,25 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
 // runs of memory, long vectorisable sweeps even where the rows are short (a 4 mm bed is 10-20
 // cells wide). Each cell still adds its taps in the order of its tap list.
 void ParticleKernel::filter_planes(const std::vector<double>& in, std::vector<double>& out,
-                                   int axis, const std::uint8_t* planes) const {
-  const int nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz(), h = half_;
-  const auto plane = std::size_t(nx) * std::size_t(ny);
+                                   int axis, const std::vector<int>& active, int nc) const {
+  const int nx = grid_.nx(), ny = grid_.ny(), h = half_;
+  const auto row = std::size_t(nx) * std::size_t(nc);
+  const auto plane = row * std::size_t(ny);
   auto axpy = [](double* o, const double* src, std::size_t n, double g) {
     for (std::size_t i = 0; i < n; ++i) o[i] += g * src[i];
   };
+  const int na = int(active.size());
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (int z = 0; z < nz; ++z) {
+  for (int a = 0; a < na; ++a) {
+    const int z = active[std::size_t(a)];
     double* o = out.data() + std::size_t(z) * plane;
     std::fill(o, o + plane, 0.0);
-    if (planes && !planes[z]) continue;
     if (axis == 2) {
       for (const Tap& t : tap_list_[2][std::size_t(z)])
         axpy(o, in.data() + std::size_t(t.j) * plane, plane, t.g);
       continue;
     }
     const double* p = in.data() + std::size_t(z) * plane;
-    const auto row = std::size_t(nx);
     for (int k = -h; k <= h; ++k) {
       const double g = taps_[std::size_t(std::abs(k))];
       if (grid_.periodic(1)) {
@@ -181,28 +207,34 @@ void ParticleKernel::filter_planes(const std::vector<double>& in, std::vector<do
   }
 }
 
-void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out,
+void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out, int nc,
                             const std::uint8_t* xy, const std::uint8_t* z) const {
-  filter_axis(in, out, 0, xy);
-  filter_axis(out, in, 1, xy);
-  filter_axis(in, out, 2, z);
+  filter_axis(in, out, 0, xy, nc);
+  filter_axis(out, in, 1, xy, nc);
+  filter_axis(in, out, 2, z, nc);
 }
 
 void ParticleKernel::locate(std::span<const Vec3> positions) {
   const std::size_t np = positions.size();
   if (np > std::size_t(UINT32_MAX))
     throw std::invalid_argument("ParticleKernel: too many particles");
-  for (std::size_t p = 0; p < np; ++p)
-    if (!positions[p].allFinite())
-      throw std::invalid_argument("ParticleKernel::locate: particle " + std::to_string(p) +
-                                  " has a non-finite position");
-  std::vector<std::array<int, 3>> base(np);
-  std::vector<std::array<double, 8>> weight(np);
-  std::vector<Index> bin(np);
+  std::vector<std::array<int, 3>>& base = scratch_base_;
+  std::vector<std::array<double, 8>>& weight = scratch_weight_;
+  std::vector<Index>& bin = scratch_bin_;
+  base.resize(np);
+  weight.resize(np);
+  bin.resize(np);
   for (int a = 0; a < 3; ++a) bins_[std::size_t(a)] = grid_.extent(a) + (grid_.periodic(a) ? 0 : 1);
 
-#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  std::size_t first_bad = np;  // the lowest particle with a non-finite position
+#pragma omp parallel for schedule(static) reduction(min \
+                                                    : first_bad) if (np >= kMinParallelParticles)
   for (std::size_t p = 0; p < np; ++p) {
+    if (!positions[p].allFinite()) {
+      first_bad = std::min(first_bad, p);
+      bin[p] = 0;  // a valid slot; the call throws below
+      continue;
+    }
     const Vec3 xl = frame_.to_lattice(positions[p]);
     double f[3];
     bool ok[3][2];
@@ -248,28 +280,50 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
       for (double& wc : w) wc /= sum;
   }
 
-  // Counting sort by bin: serial and stable, so each bin lists its particles by index and the
-  // deposits below add them in an order fixed by the input alone. The particle data are then kept
-  // in bin order, which makes the deposits and samples read memory contiguously.
+  if (first_bad < np)
+    throw std::invalid_argument("ParticleKernel::locate: particle " + std::to_string(first_bad) +
+                                " has a non-finite position");
+
+  // Counting sort by bin: stable, so each bin lists its particles by index and the deposits below
+  // add them in an order fixed by the input alone. Only the slot indices are found serially; the
+  // particle data are then gathered into bin order in parallel, which makes the deposits and
+  // samples read memory contiguously.
   const Index nbins = Index(bins_[0]) * bins_[1] * bins_[2];
   bin_start_.assign(std::size_t(nbins) + 1, 0);
   for (std::size_t p = 0; p < np; ++p) ++bin_start_[std::size_t(bin[p]) + 1];
   for (Index k = 0; k < nbins; ++k) bin_start_[std::size_t(k) + 1] += bin_start_[std::size_t(k)];
   bin_items_.resize(np);
-  base_.resize(np);
   weight_.resize(np);
-  std::vector<Index> fill(bin_start_.begin(), bin_start_.end() - 1);
-  unmapped_ = 0;
-  first_unmapped_ = -1;
-  for (std::size_t p = 0; p < np; ++p) {
-    const auto k = std::size_t(fill[std::size_t(bin[p])]++);
-    bin_items_[k] = std::uint32_t(p);
-    base_[k] = base[p];
+  corner_cell_.resize(np);
+  {
+    std::vector<Index> fill(bin_start_.begin(), bin_start_.end() - 1);
+    for (std::size_t p = 0; p < np; ++p)
+      bin_items_[std::size_t(fill[std::size_t(bin[p])]++)] = std::uint32_t(p);
+  }
+  std::size_t unmapped = 0, first_unmapped = np;
+#pragma omp parallel for schedule(static) reduction(+ : unmapped) reduction(min : first_unmapped) \
+    if (np >= kMinParallelParticles)
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::size_t p = bin_items_[k];
     weight_[k] = weight[p];
     bool any = false;
-    for (double wc : weight[p]) any = any || wc > 0;
-    if (!any && unmapped_++ == 0) first_unmapped_ = Index(p);
+    for (int corner = 0; corner < 8; ++corner) {
+      std::uint32_t c = 0;
+      if (weight[p][std::size_t(corner)] > 0) {
+        any = true;
+        int q[3];
+        for (int a = 0; a < 3; ++a) {
+          q[a] = base[p][std::size_t(a)] + ((corner >> a) & 1);
+          if (q[a] == grid_.extent(a)) q[a] = 0;
+        }
+        c = std::uint32_t(cell(q[0], q[1], q[2]));
+      }
+      corner_cell_[k][std::size_t(corner)] = c;
+    }
+    if (!any) ++unmapped, first_unmapped = std::min(first_unmapped, p);
   }
+  unmapped_ = unmapped;
+  first_unmapped_ = unmapped ? Index(first_unmapped) : -1;
 
   // Planes the particles touch: from the bins, whose z coordinate is the slowest (bin plane b
   // holds the particles whose lower trilinear cell is b, or b - 1 on a non-periodic axis), each
@@ -293,41 +347,41 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
 }
 
 template <int NC>
-void ParticleKernel::gather_sources(const std::vector<double>& qs,
-                                    std::array<std::vector<double>, 3>& src) const {
+void ParticleKernel::gather_sources(const std::vector<double>& qs, std::vector<double>& src) const {
   const auto ncell = std::size_t(grid_.cells());
-  for (int a = 0; a < NC; ++a) src[std::size_t(a)].assign(ncell, 0.0);
-  // One sweep per corner, corners in order, particles in bin order: each cell receives its terms
-  // in the order of a per-cell gather over its 8 bins (corner 0 first, each bin's particles by
-  // index), at a cost of 8 per particle rather than 8 bin visits per cell. In one sweep all the
-  // particles of a bin plane write one cell plane, a different one for each bin plane, so the
-  // planes run in parallel without races and without atomics.
+  src.assign(ncell * NC, 0.0);
+  // Each cell receives its terms in the order of a per-cell gather over its 8 bins: corner 0
+  // first, each bin's particles by index. Cell plane z is written by one thread only, from two
+  // bin planes: corners 0-3 from the particles whose lower trilinear plane is z, corners 4-7
+  // from those whose lower plane is z - 1 (wrapped). So the planes run in parallel without races
+  // or atomics, in one parallel region, at a cost of 8 per particle.
+  const int nz = grid_.nz();
+  const bool wrap = grid_.periodic(2);
   const Index per_plane = Index(bins_[0]) * bins_[1];
-  for (int corner = 0; corner < 8; ++corner) {
-    // Dynamic: a bed fills the lower bin planes only, which a static split would give one thread.
+  // Bin plane of the particles whose lower trilinear plane is i (-1 allowed on a non-periodic
+  // axis).
+  const auto bin_plane = [&](int i) { return wrap ? (i + nz) % nz : i + 1; };
+  // Dynamic: a bed fills the lower planes only, which a static split would give one thread.
 #pragma omp parallel for schedule(dynamic, 1) if (particle_count() >= kMinParallelParticles)
-    for (int b = 0; b < bins_[2]; ++b)
+  for (int z = 0; z < nz; ++z)
+    for (int corner = 0; corner < 8; ++corner) {
+      const int b = bin_plane(corner < 4 ? z : z - 1);
       for (Index k = bin_start_[std::size_t(b * per_plane)];
            k < bin_start_[std::size_t((b + 1) * per_plane)]; ++k) {
         const double w = weight_[std::size_t(k)][std::size_t(corner)];
         if (w == 0) continue;  // also every corner outside a non-periodic box
-        int q[3];
-        for (int a = 0; a < 3; ++a) {
-          q[a] = base_[std::size_t(k)][std::size_t(a)] + ((corner >> a) & 1);
-          if (q[a] == grid_.extent(a)) q[a] = 0;
-        }
-        const auto c = std::size_t(cell(q[0], q[1], q[2]));
+        const std::size_t c = corner_cell_[std::size_t(k)][std::size_t(corner)];
         for (int a = 0; a < NC; ++a)
-          src[std::size_t(a)][c] += w * qs[std::size_t(k) * NC + std::size_t(a)];
+          src[c * NC + std::size_t(a)] += w * qs[std::size_t(k) * NC + std::size_t(a)];
       }
-  }
+    }
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < ncell; ++c)
-    for (int a = 0; a < NC; ++a) src[std::size_t(a)][c] *= inv_z_[c];
+    for (int a = 0; a < NC; ++a) src[c * NC + std::size_t(a)] *= inv_z_[c];
 }
 
 template <int NC>
-void ParticleKernel::sample(const std::array<std::vector<double>, 3>& v, double* out) const {
+void ParticleKernel::sample(const double* v, double* out) const {
   const std::size_t np = particle_count();
 #pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
   for (std::size_t k = 0; k < np; ++k) {
@@ -335,13 +389,8 @@ void ParticleKernel::sample(const std::array<std::vector<double>, 3>& v, double*
     for (int corner = 0; corner < 8; ++corner) {
       const double w = weight_[k][std::size_t(corner)];
       if (w == 0) continue;  // also every corner outside a non-periodic box
-      int q[3];
-      for (int a = 0; a < 3; ++a) {
-        q[a] = base_[k][std::size_t(a)] + ((corner >> a) & 1);
-        if (q[a] == grid_.extent(a)) q[a] = 0;
-      }
-      const auto c = std::size_t(cell(q[0], q[1], q[2]));
-      for (int a = 0; a < NC; ++a) s[a] += w * v[std::size_t(a)][c];
+      const std::size_t c = corner_cell_[k][std::size_t(corner)];
+      for (int a = 0; a < NC; ++a) s[a] += w * v[c * NC + std::size_t(a)];
     }
     for (int a = 0; a < NC; ++a) out[std::size_t(bin_items_[k]) * NC + std::size_t(a)] = s[a];
   }
@@ -356,12 +405,7 @@ void ParticleKernel::sample_local(const double* field, double* out) const {
     for (int corner = 0; corner < 8; ++corner) {
       const double w = weight_[k][std::size_t(corner)];
       if (w == 0) continue;
-      int q[3];
-      for (int a = 0; a < 3; ++a) {
-        q[a] = base_[k][std::size_t(a)] + ((corner >> a) & 1);
-        if (q[a] == grid_.extent(a)) q[a] = 0;
-      }
-      const auto c = std::size_t(cell(q[0], q[1], q[2]));
+      const std::size_t c = corner_cell_[k][std::size_t(corner)];
       for (int a = 0; a < NC; ++a) s[a] += w * field[c * NC + std::size_t(a)];
       sw += w;
     }
@@ -385,21 +429,36 @@ void ParticleKernel::interpolate_local(std::span<const Vec3> field, std::vector<
                   reinterpret_cast<double*>(out.data()));
 }
 
-void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v) const {
+void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v, int nc) const {
+  const auto ncell = std::size_t(grid_.cells());
+  const auto m = std::size_t(nc);
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < in.size(); ++c) in[c] = gas_[c] ? in[c] : 0.0;
-  filter(in, v, planes(reach_), planes(occupied_));
+  for (std::size_t c = 0; c < ncell; ++c)
+    if (!gas_[c])
+      for (std::size_t a = 0; a < m; ++a) in[c * m + a] = 0.0;
+  filter(in, v, nc, planes(reach_), planes(occupied_));
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < v.size(); ++c) v[c] *= inv_z_[c];
+  for (std::size_t c = 0; c < ncell; ++c)
+    for (std::size_t a = 0; a < m; ++a) v[c * m + a] *= inv_z_[c];
+}
+
+template <int NC>
+void ParticleKernel::deposit_components(const std::vector<double>& qs,
+                                        std::vector<double>& dep) const {
+  std::vector<double> binned(qs.size());
+  const std::size_t np = particle_count();
+#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  for (std::size_t k = 0; k < np; ++k)
+    for (int a = 0; a < NC; ++a)
+      binned[k * NC + std::size_t(a)] = qs[std::size_t(bin_items_[k]) * NC + std::size_t(a)];
+  std::vector<double> src;
+  gather_sources<NC>(binned, src);
+  filter(src, dep, NC, planes(occupied_), planes(reach_));
 }
 
 void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  std::vector<double> qs(q.size());
-  for (std::size_t k = 0; k < qs.size(); ++k) qs[k] = q[bin_items_[k]];
-  std::array<std::vector<double>, 3> src;
-  gather_sources<1>(qs, src);
-  filter(src[0], out, planes(occupied_), planes(reach_));
+  deposit_components<1>(std::vector<double>(q.begin(), q.end()), out);
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? out[c] * inv_v : 0.0;
@@ -407,41 +466,80 @@ void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out
 
 void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  std::vector<double> qs(3 * q.size());
-  for (std::size_t k = 0; k < q.size(); ++k)
-    for (int a = 0; a < 3; ++a) qs[3 * k + std::size_t(a)] = q[bin_items_[k]][a];
-  std::array<std::vector<double>, 3> src;
-  gather_sources<3>(qs, src);
-  out.resize(std::size_t(grid_.cells()));
+  const auto* flat = reinterpret_cast<const double*>(q.data());
   std::vector<double> dep;
+  deposit_components<3>(std::vector<double>(flat, flat + 3 * q.size()), dep);
+  const auto ncell = std::size_t(grid_.cells());
+  out.resize(ncell);
   const double inv_v = 1.0 / cell_volume();
-  for (int a = 0; a < 3; ++a) {
-    filter(src[std::size_t(a)], dep, planes(occupied_), planes(reach_));
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-    for (std::size_t c = 0; c < dep.size(); ++c) out[c][a] = gas_[c] ? dep[c] * inv_v : 0.0;
+  for (std::size_t c = 0; c < ncell; ++c)
+    for (int a = 0; a < 3; ++a) out[c][a] = gas_[c] ? dep[3 * c + std::size_t(a)] * inv_v : 0.0;
+}
+
+void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
+                             std::vector<double>& out_q, std::vector<Vec3>& out_v) const {
+  require_size(q.size(), particle_count(), "deposit input");
+  require_size(v.size(), particle_count(), "deposit input");
+  std::vector<double> qs(4 * q.size()), dep;
+#pragma omp parallel for schedule(static) if (q.size() >= kMinParallelParticles)
+  for (std::size_t p = 0; p < q.size(); ++p) {
+    qs[4 * p] = q[p];
+    for (int a = 0; a < 3; ++a) qs[4 * p + 1 + std::size_t(a)] = v[p][a];
+  }
+  deposit_components<4>(qs, dep);
+  const auto ncell = std::size_t(grid_.cells());
+  out_q.resize(ncell);
+  out_v.resize(ncell);
+  const double inv_v = 1.0 / cell_volume();
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < ncell; ++c) {
+    out_q[c] = gas_[c] ? dep[4 * c] * inv_v : 0.0;
+    for (int a = 0; a < 3; ++a)
+      out_v[c][a] = gas_[c] ? dep[4 * c + 1 + std::size_t(a)] * inv_v : 0.0;
   }
 }
 
 // Transpose of deposit(): v(c) = sum_c' m(c') G(c' - c) field(c') / Z(c), then trilinear weights.
 void ParticleKernel::interpolate(std::span<const double> field, std::vector<double>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
-  std::vector<double> in(field.begin(), field.end());
-  std::array<std::vector<double>, 3> v;
-  smooth(in, v[0]);
+  std::vector<double> in(field.begin(), field.end()), v;
+  smooth(in, v, 1);
   out.resize(particle_count());
-  sample<1>(v, out.data());
+  sample<1>(v.data(), out.data());
 }
 
 void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
-  std::array<std::vector<double>, 3> v;
-  std::vector<double> in(field.size());
-  for (int a = 0; a < 3; ++a) {
-    for (std::size_t c = 0; c < in.size(); ++c) in[c] = field[c][a];
-    smooth(in, v[std::size_t(a)]);
-  }
+  const auto* flat = reinterpret_cast<const double*>(field.data());
+  std::vector<double> in(flat, flat + 3 * field.size()), v;
+  smooth(in, v, 3);
   out.resize(particle_count());
-  sample<3>(v, reinterpret_cast<double*>(out.data()));
+  sample<3>(v.data(), reinterpret_cast<double*>(out.data()));
+}
+
+void ParticleKernel::interpolate(std::span<const double> field, std::span<const Vec3> vfield,
+                                 std::vector<double>& out, std::vector<Vec3>& vout) const {
+  const auto ncell = std::size_t(grid_.cells());
+  require_size(field.size(), ncell, "interpolated field");
+  require_size(vfield.size(), ncell, "interpolated field");
+  std::vector<double> in(4 * ncell), v;
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < ncell; ++c) {
+    in[4 * c] = field[c];
+    for (int a = 0; a < 3; ++a) in[4 * c + 1 + std::size_t(a)] = vfield[c][a];
+  }
+  smooth(in, v, 4);
+  const std::size_t np = particle_count();
+  std::vector<double> both(4 * np);
+  sample<4>(v.data(), both.data());
+  out.resize(np);
+  vout.resize(np);
+#pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
+  for (std::size_t p = 0; p < np; ++p) {
+    out[p] = both[4 * p];
+    vout[p] = Vec3(both[4 * p + 1], both[4 * p + 2], both[4 * p + 3]);
+  }
 }
 
 PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, double eps_min,
@@ -450,6 +548,7 @@ PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, doubl
   if (!(eps_min > 0 && eps_min <= 1))
     throw std::invalid_argument("eps_min must lie in (0, 1], got " + std::to_string(eps_min));
   std::vector<double> vol(radii.size());
+#pragma omp parallel for schedule(static) if (radii.size() >= kMinParallelParticles)
   for (std::size_t p = 0; p < radii.size(); ++p) vol[p] = 4.0 / 3.0 * kPi * std::pow(radii[p], 3);
   deposit(vol, eps);  // solid fraction phi
   PorosityReport r;

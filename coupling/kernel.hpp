@@ -29,7 +29,7 @@
 //
 // Determinism: nothing is scattered with atomics. locate() bins the particles by their lower
 // trilinear cell with a serial counting sort (stable, by particle index); deposition then adds,
-// for each cell, the terms of its 8 bins in a fixed order (corner by corner, a bin plane per
+// for each cell, the terms of its 8 bins in a fixed order (corner by corner, a cell plane per
 // thread), and every filter pass writes each cell from one thread with taps in a fixed order.
 // Results are bitwise the same for any OpenMP thread count (not for a permuted particle list: that
 // reorders the sums within a bin, a round-off change).
@@ -123,12 +123,18 @@ class ParticleKernel {
   /// (e.g. forces [N] -> force density [N/m^3]); sum_c out(c) dx^3 = sum_p q_p to round-off.
   void deposit(std::span<const double> q, std::vector<double>& out) const;
   void deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const;
+  /// Both deposits at once (one filter over four components, bitwise the same as two calls).
+  void deposit(std::span<const double> q, std::span<const Vec3> v, std::vector<double>& out_q,
+               std::vector<Vec3>& out_v) const;
 
   /// Values at the particles of a cell field (compact order; solid cells are not read):
   /// out_p = sum_c K_p(c) field(c). Exact for a constant field; for a linear one wherever the
   /// kernel reaches only gas cells (symmetric taps, trilinear weights).
   void interpolate(std::span<const double> field, std::vector<double>& out) const;
   void interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const;
+  /// Both interpolations at once (one filter over four components, bitwise the same as two calls).
+  void interpolate(std::span<const double> field, std::span<const Vec3> vfield,
+                   std::vector<double>& out, std::vector<Vec3>& vout) const;
 
   /// Trilinear interpolation over the gas corners of each particle's cell (weights renormalised
   /// over them), without the filter: for a value needed only locally, where the exchange does not
@@ -145,31 +151,39 @@ class ParticleKernel {
   void pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad) const;
 
  private:
+  // Fields of nc components are interleaved: component a of cell c at c * nc + a. Each component
+  // is filtered exactly as a scalar field alone would be (the same taps in the same order).
   // One filter pass along `axis`: out(c) = sum_k g(|k|) in(c + k e_axis), taps in a fixed order,
   // on the z planes where `planes` is nonzero (all if null); the other planes of out read 0.
   void filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
-                   const std::uint8_t* planes) const;
-  // filter_axis for axis 1 or 2 (a plane at a time).
+                   const std::uint8_t* planes, int nc) const;
+  // filter_axis for axis 1 or 2 (a plane at a time), on the listed planes.
   void filter_planes(const std::vector<double>& in, std::vector<double>& out, int axis,
-                     const std::uint8_t* planes) const;
+                     const std::vector<int>& active, int nc) const;
+  // The z planes where `planes` is nonzero (all if null), ascending; zeroes out's other planes.
+  std::vector<int> active_planes(const std::uint8_t* planes, std::vector<double>& out,
+                                 int nc) const;
   // G * in over all three axes (in is overwritten as scratch): the x and y passes on the planes
   // `xy`, the z pass on the planes `z` (null: all). Skipping a plane changes no bit of what is
   // computed elsewhere: a deposit's x and y passes see only zeros off the particles' planes, and
   // an interpolation samples only those planes.
-  void filter(std::vector<double>& in, std::vector<double>& out, const std::uint8_t* xy = nullptr,
-              const std::uint8_t* z = nullptr) const;
-  // Source cells of NC components: src[a](c) = sum_p w_c(x_p) q_p[a] / Z(c), the terms of each
+  void filter(std::vector<double>& in, std::vector<double>& out, int nc,
+              const std::uint8_t* xy = nullptr, const std::uint8_t* z = nullptr) const;
+  // Source cells of NC components: src(c, a) = sum_p w_c(x_p) q_p[a] / Z(c), the terms of each
   // cell's 8 bins added corner by corner; qs holds the NC values of each particle in bin order.
   template <int NC>
-  void gather_sources(const std::vector<double>& qs, std::array<std::vector<double>, 3>& src) const;
-  // out[NC p + a] = sum_c w_c(x_p) v[a](c) over the 8 trilinear cells of each particle p.
+  void gather_sources(const std::vector<double>& qs, std::vector<double>& src) const;
+  // out[NC p + a] = sum_c w_c(x_p) v(c, a) over the 8 trilinear cells of each particle p.
   template <int NC>
-  void sample(const std::array<std::vector<double>, 3>& v, double* out) const;
-  // As sample, from one interleaved field (NC values per cell), divided by the gas weight.
+  void sample(const double* v, double* out) const;
+  // As sample, divided by the gas weight.
   template <int NC>
   void sample_local(const double* field, double* out) const;
-  // v = (G * (m in)) / Z, the field each source cell reads (in is overwritten).
-  void smooth(std::vector<double>& in, std::vector<double>& v) const;
+  // v = (G * (m in)) / Z, the field each source cell reads (in, of nc components, is overwritten).
+  void smooth(std::vector<double>& in, std::vector<double>& v, int nc) const;
+  // The deposit of NC components per particle (qs in particle order), unscaled: G * src.
+  template <int NC>
+  void deposit_components(const std::vector<double>& qs, std::vector<double>& dep) const;
   Index cell(int x, int y, int z) const { return grid_.compact_index(x, y, z); }
 
   lbm::Grid grid_;
@@ -188,14 +202,19 @@ class ParticleKernel {
   };
   std::array<std::vector<std::vector<Tap>>, 3> tap_list_;
 
-  // From locate(), in bin order (slot k holds particle bin_items_[k]): the lower trilinear cell
-  // (wrapped; -1 allowed on a non-periodic axis) and the 8 corner weights (corner a + 2 b + 4 c is
-  // lower + (a, b, c)), zero on corners off the gas.
+  // From locate(), in bin order (slot k holds particle bin_items_[k]): the 8 corner weights
+  // (corner a + 2 b + 4 c is the lower trilinear cell + (a, b, c), wrapped), zero on corners off
+  // the gas and outside a non-periodic box, and the corners' cells, found once for every deposit
+  // and sample that follows (a dozen per exchange; 0 where the weight is 0).
   std::array<int, 3> bins_{};             // bins per axis: n, or n + 1 on a non-periodic axis
   std::vector<Index> bin_start_;          // CSR over bins
   std::vector<std::uint32_t> bin_items_;  // particle indices, ascending within a bin
-  std::vector<std::array<int, 3>> base_;
   std::vector<std::array<double, 8>> weight_;
+  std::vector<std::array<std::uint32_t, 8>> corner_cell_;
+  // locate()'s per-particle results in particle order, kept between calls (no allocation).
+  std::vector<std::array<int, 3>> scratch_base_;
+  std::vector<std::array<double, 8>> scratch_weight_;
+  std::vector<Index> scratch_bin_;
   // Per z plane, from locate(): a particle has a trilinear corner there (occupied_), or within the
   // filter's reach of one (reach_). A bed fills a fraction of its column, and the filter passes,
   // the bulk of the exchange's cost, need only these planes.

@@ -447,7 +447,8 @@ TEST_CASE("Kernel: clipping reports the count and the first clipped cell", "[cou
 
 TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 threads",
           "[coupling]") {
-  // Equivalence test (not validation): STYLE 6.
+  // Equivalence test (not validation): STYLE 6. Also the fused four-component calls the
+  // exchange uses (a scalar and a vector in one filter) against the separate calls.
   const Grid g(20, 18, 16, {true, false, false});
   const auto solid = block_mask(g, {4, 5, 0}, {9, 9, 6});
   std::mt19937_64 rng(3);
@@ -464,8 +465,8 @@ TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 
     p[c] = 1e5 * u(rng);
   }
   struct Out {
-    std::vector<double> eps;
-    std::vector<Vec3> force, u, grad;
+    std::vector<double> eps, vol, vol_fused, eps_p, eps_p_fused;
+    std::vector<Vec3> force, u, grad, force_fused, grad_fused;
   };
   // Sizes above the thresholds below which the loops run serially.
   REQUIRE(g.cells() >= ParticleKernel::kMinParallelCells);
@@ -481,6 +482,10 @@ TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 
     std::vector<Vec3> cell_grad;
     kernel.pressure_gradient(p, cell_grad);
     kernel.interpolate(cell_grad, o.grad);
+    kernel.deposit(radii, o.vol);
+    kernel.deposit(radii, f, o.vol_fused, o.force_fused);
+    kernel.interpolate(o.eps, o.eps_p);
+    kernel.interpolate(o.eps, cell_grad, o.eps_p_fused, o.grad_fused);
     return o;
   };
   const int saved = omp_get_max_threads();
@@ -493,6 +498,13 @@ TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 
   CHECK(same(one.force, two.force));
   CHECK(same(one.u, two.u));
   CHECK(same(one.grad, two.grad));
+  for (const Out* o : {&one, &two}) {
+    CHECK(same(o->vol, o->vol_fused));
+    CHECK(same(o->force, o->force_fused));
+    CHECK(same(o->eps_p, o->eps_p_fused));
+    CHECK(same(o->grad, o->grad_fused));
+  }
+  CHECK(same(one.vol, two.vol));
 }
 
 TEST_CASE("Kernel: skipping the planes that hold no particle changes no bit", "[coupling]") {
