@@ -89,8 +89,8 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   kernel_.interpolate_local(cell_vec_, u_p_);
   if (s_.pressure_gradient) {
     density_to_pressure(pressure_);
-    kernel_.pressure_gradient(pressure_, grad_p_);
-    kernel_.interpolate(eps_, grad_p_, eps_p_, f_grad_);
+    kernel_.pressure_gradient(pressure_, cell_vec_);  // the velocity is read: reuse its field
+    kernel_.interpolate(eps_, cell_vec_, eps_p_, f_grad_);
   } else {
     kernel_.interpolate(eps_, eps_p_);
     f_grad_.assign(np, Vec3::Zero());

@@ -107,7 +107,6 @@ class Coupler {
   int steps_ = 0, steps_done_ = 0;
   std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_, pressure_;
   std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_, source_lat_;
-  std::vector<Vec3> grad_p_;  // [Pa/m] per cell
   ExchangeReport report_;
   // Two-way: the gas holds the fields of an interval without particles (eps = 1, no drag, the
   // source alone), and that interval's report. A following interval without particles would set

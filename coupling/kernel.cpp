@@ -67,8 +67,8 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
   for (double& g : taps_) g /= sum;
 
   const auto ncell = std::size_t(grid_.cells());
-  if (ncell > std::size_t(UINT32_MAX))
-    throw std::invalid_argument("ParticleKernel: more than 2^32 cells");
+  if (ncell >= std::size_t(UINT32_MAX))
+    throw std::invalid_argument("ParticleKernel: 2^32 cells or more (cell indices are 32-bit)");
   gas_.assign(ncell, 1);
   if (!solid.empty()) {
     require_size(solid.size(), ncell, "solid mask");
@@ -232,7 +232,7 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
   for (std::size_t p = 0; p < np; ++p) {
     if (!positions[p].allFinite()) {
       first_bad = std::min(first_bad, p);
-      bin[p] = 0;  // a valid slot; the call throws below
+      bin[p] = 0;  // unused: the call throws below
       continue;
     }
     const Vec3 xl = frame_.to_lattice(positions[p]);
@@ -309,7 +309,7 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
     bool any = false;
     for (int corner = 0; corner < 8; ++corner) {
       std::uint32_t c = 0;
-      if (weight[p][std::size_t(corner)] > 0) {
+      if (weight[p][std::size_t(corner)] != 0) {  // the readers skip w == 0
         any = true;
         int q[3];
         for (int a = 0; a < 3; ++a) {
@@ -350,6 +350,7 @@ template <int NC>
 void ParticleKernel::gather_sources(const std::vector<double>& qs, std::vector<double>& src) const {
   const auto ncell = std::size_t(grid_.cells());
   src.assign(ncell * NC, 0.0);
+  if (bin_start_.empty()) return;  // before the first locate(): no particles
   // Each cell receives its terms in the order of a per-cell gather over its 8 bins: corner 0
   // first, each bin's particles by index. Cell plane z is written by one thread only, from two
   // bin planes: corners 0-3 from the particles whose lower trilinear plane is z, corners 4-7

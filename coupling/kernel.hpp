@@ -91,6 +91,7 @@ class ParticleKernel {
 
   /// width: sigma [m], at least frame.dx (std::invalid_argument otherwise). solid: one byte per
   /// interior cell in compact order, nonzero where there is no gas; empty: every cell is gas.
+  /// Fewer than 2^32 - 1 cells (32-bit cell indices; std::invalid_argument otherwise).
   ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
                  std::span<const std::uint8_t> solid = {});
 

@@ -64,9 +64,11 @@ void DemSolver::rebuild() {
   for (std::size_t k = 0; k < order.size(); ++k) inv[order[k]] = static_cast<std::uint32_t>(k);
 
   p_.permute(order);
-  PairList old_pairs = std::move(pairs_);
+  // The new list is built in the storage of the one before the last (build_pairs resets all of
+  // it): no allocation and no first-touch page faults per rebuild.
+  std::swap(pairs_, spare_pairs_);
+  const PairList& old_pairs = spare_pairs_;
   WallContactList old_wc = std::move(wc_);
-  pairs_ = PairList{};
   wc_ = WallContactList{};
 
   CellList cells;

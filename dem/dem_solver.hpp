@@ -128,6 +128,7 @@ class DemSolver {
   ParticleArrays p_;
   std::vector<Wall> walls_;
   PairList pairs_;
+  PairList spare_pairs_;  // the last rebuild's old list: storage for the next (dem_rebuild.cpp)
   WallContactList wc_;
   CollisionStats stats_;
   std::vector<Vec3> x_ref_;            // positions at the last rebuild

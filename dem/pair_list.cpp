@@ -6,11 +6,25 @@
 
 namespace lbdem::dem {
 
+namespace {
+// Below this many pairs a pass runs on one thread (an OpenMP region costs more than the work).
+constexpr std::size_t kParallelPairs = 4096;
+}  // namespace
+
 void PairList::resize(std::size_t n) {
   i.resize(n), j.resize(n);
-  history.assign(n, ContactHistory{});
-  tally.assign(n, ContactTally{});
-  state.assign(n, 0);
+  history.resize(n);
+  tally.resize(n);
+  state.resize(n);
+  // resize() initialises only what is new; the rest, reused storage (the rebuild swaps two lists),
+  // is cleared on all threads: about 200 B per pair, a memory-bound pass that a rebuild every few
+  // steps repeats.
+#pragma omp parallel for schedule(static) if (n >= kParallelPairs)
+  for (std::size_t k = 0; k < n; ++k) {
+    history[k] = ContactHistory{};
+    tally[k] = ContactTally{};
+    state[k] = 0;
+  }
 }
 
 void PairList::build_transpose(std::size_t np) {
@@ -20,8 +34,10 @@ void PairList::build_transpose(std::size_t np) {
   jslot.resize(size());
   std::vector<std::uint32_t> fill(jfirst.begin(), jfirst.end() - 1);
   for (std::size_t k = 0; k < size(); ++k) jslot[k] = fill[j[k]]++;
-  j_force.assign(size(), Vec3::Zero());
-  j_torque.assign(size(), Vec3::Zero());
+  j_force.resize(size());
+  j_torque.resize(size());
+#pragma omp parallel for schedule(static) if (size() >= kParallelPairs)
+  for (std::size_t k = 0; k < size(); ++k) j_force[k] = j_torque[k] = Vec3::Zero();
 }
 
 void CellList::build(const std::vector<Vec3>& x, const CellGrid& g) {
@@ -29,10 +45,9 @@ void CellList::build(const std::vector<Vec3>& x, const CellGrid& g) {
   const std::size_t nc = g.cells();
   start.assign(nc + 1, 0);
   std::vector<std::uint32_t> cell(x.size());
-  for (std::size_t p = 0; p < x.size(); ++p) {
-    cell[p] = static_cast<std::uint32_t>(g.cell_of(x[p]));
-    ++start[cell[p] + 1];
-  }
+#pragma omp parallel for schedule(static) if (x.size() >= kParallelPairs)
+  for (std::size_t p = 0; p < x.size(); ++p) cell[p] = static_cast<std::uint32_t>(g.cell_of(x[p]));
+  for (std::size_t p = 0; p < x.size(); ++p) ++start[cell[p] + 1];
   for (std::size_t c = 0; c < nc; ++c) start[c + 1] += start[c];
   items.resize(x.size());
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
@@ -64,33 +79,69 @@ int axis_neighbours(int c, int n, bool periodic, std::array<int, 3>& out) {
   return k;
 }
 
+// The candidate ranges of one cell's neighbourhood in CellList::items: per (y, z) neighbour row,
+// the x neighbours that are consecutive cells form one range (cells are x-fastest), so an interior
+// cell has 9 ranges instead of 27 cells. Each range keeps the largest particle index it holds:
+// one whose largest is not above p holds no partner of p (the half list), whatever the order of
+// the particles. Found once per cell and reused while the particles of a cell follow each other
+// (the spatial sort puts them together).
+struct NeighbourRanges {
+  std::size_t cell = std::numeric_limits<std::size_t>::max();
+  int count = 0;
+  std::array<std::uint32_t, 27> k0{}, k1{}, top{};
+
+  void find(std::size_t key, const std::array<int, 3>& c, const Domain& d, const CellList& cl) {
+    cell = key;
+    count = 0;
+    const CellGrid& g = cl.grid;
+    std::array<int, 3> nx{}, ny{}, nz{};
+    const int kx = axis_neighbours(c[0], g.n[0], d.periodic[0], nx);
+    const int ky = axis_neighbours(c[1], g.n[1], d.periodic[1], ny);
+    const int kz = axis_neighbours(c[2], g.n[2], d.periodic[2], nz);
+    for (int zc = 0; zc < kz; ++zc)
+      for (int yc = 0; yc < ky; ++yc)
+        for (int a = 0; a < kx;) {
+          // The longest run of consecutive x cells from nx[a] (axis_neighbours lists them in
+          // ascending order unless a periodic wrap intervenes).
+          int b = a + 1;
+          while (b < kx && nx[b] == nx[b - 1] + 1) ++b;
+          const std::size_t first = g.index(nx[a], ny[yc], nz[zc]);
+          const std::size_t last = g.index(nx[b - 1], ny[yc], nz[zc]);
+          const std::uint32_t r0 = cl.start[first], r1 = cl.start[last + 1];
+          a = b;
+          if (r0 == r1) continue;
+          std::uint32_t top_index = 0;
+          for (std::size_t cc = first; cc <= last; ++cc)
+            if (cl.start[cc + 1] > cl.start[cc])
+              top_index = std::max(top_index, cl.items[cl.start[cc + 1] - 1]);
+          k0[std::size_t(count)] = r0;
+          k1[std::size_t(count)] = r1;
+          top[std::size_t(count)] = top_index;
+          ++count;
+        }
+  }
+};
+
 template <class Visit>
 void for_neighbours(std::uint32_t p, const std::vector<Vec3>& x, const std::vector<double>& r,
-                    const Domain& d, const CellList& cl, double extra, Visit&& visit) {
+                    const Domain& d, const CellList& cl, NeighbourRanges& nr, double extra,
+                    Visit&& visit) {
   const CellGrid& g = cl.grid;
-  std::array<int, 3> nx{}, ny{}, nz{};
-  const int kx = axis_neighbours(g.coord(x[p][0], 0), g.n[0], d.periodic[0], nx);
-  const int ky = axis_neighbours(g.coord(x[p][1], 1), g.n[1], d.periodic[1], ny);
-  const int kz = axis_neighbours(g.coord(x[p][2], 2), g.n[2], d.periodic[2], nz);
+  const std::array<int, 3> c = {g.coord(x[p][0], 0), g.coord(x[p][1], 1), g.coord(x[p][2], 2)};
+  const std::size_t key = g.index(c[0], c[1], c[2]);
+  if (key != nr.cell) nr.find(key, c, d, cl);
   const bool per = d.any_periodic();
-  for (int c = 0; c < kz; ++c)
-    for (int b = 0; b < ky; ++b)
-      for (int a = 0; a < kx; ++a) {
-        const std::size_t cell = g.index(nx[a], ny[b], nz[c]);
-        const std::uint32_t k0 = cl.start[cell], k1 = cl.start[cell + 1];
-        // A cell lists its particles in ascending order (CellList::build), so one whose last is
-        // not above p holds no partner of p. In the spatially sorted order that is every cell
-        // before p's own: the half stencil, found without assuming the sort.
-        if (k0 == k1 || cl.items[k1 - 1] <= p) continue;
-        for (std::uint32_t k = k0; k < k1; ++k) {
-          const std::uint32_t q = cl.items[k];
-          if (q <= p) continue;
-          Vec3 dx = x[q] - x[p];
-          if (per) dx = d.min_image(dx);
-          const double cut = r[p] + r[q] + extra;
-          if (dx.squaredNorm() < cut * cut) visit(q);
-        }
-      }
+  for (int m = 0; m < nr.count; ++m) {
+    if (nr.top[std::size_t(m)] <= p) continue;
+    for (std::uint32_t k = nr.k0[std::size_t(m)]; k < nr.k1[std::size_t(m)]; ++k) {
+      const std::uint32_t q = cl.items[k];
+      if (q <= p) continue;
+      Vec3 dx = x[q] - x[p];
+      if (per) dx = d.min_image(dx);
+      const double cut = r[p] + r[q] + extra;
+      if (dx.squaredNorm() < cut * cut) visit(q);
+    }
+  }
 }
 
 }  // namespace
@@ -110,9 +161,10 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
   for (std::size_t b = 0; b < nblocks; ++b) {
     std::vector<std::uint32_t>& v = found[b];
     v.clear();
+    NeighbourRanges nr;
     for (std::size_t p = b * kBlock; p < std::min(np, (b + 1) * kBlock); ++p) {
       const std::size_t before = v.size();
-      for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, extra,
+      for_neighbours(static_cast<std::uint32_t>(p), x, r, d, cells, nr, extra,
                      [&](std::uint32_t q) { v.push_back(q); });
       // Each particle's partners ascending: carry_over() finds pairs by binary search.
       std::sort(v.begin() + std::ptrdiff_t(before), v.end());
@@ -135,37 +187,54 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
 void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh,
                 std::vector<ContactTally>& dropped) {
   constexpr auto kGone = std::numeric_limits<std::uint32_t>::max();
-  struct Item {
-    std::uint32_t a, b, src;
-    bool flip;
-  };
-  std::vector<Item> items;
-  for (std::uint32_t k = 0; k < old.size(); ++k) {
+  // Where each old pair's state goes: a fresh pair, nowhere (not interacting), or dropped (a
+  // partner removed, or beyond the cut-off, which cannot happen while the skin holds). Distinct
+  // old pairs are distinct fresh pairs, so the copies run in parallel without conflicts; the
+  // dropped tallies are then listed serially in a fixed order (removed partners by old index,
+  // the rest by new (a, b)), the same for any thread count.
+  constexpr std::uint32_t kNone = kGone, kRemoved = kGone - 1, kBeyond = kGone - 2;
+  const std::size_t n = old.size();
+  std::vector<std::uint32_t> dest(n);
+#pragma omp parallel for schedule(static) if (n >= kParallelPairs)
+  for (std::size_t k = 0; k < n; ++k) {
+    dest[k] = kNone;
     if (!old.state[k]) continue;
-    const std::uint32_t a = inv[old.i[k]], b = inv[old.j[k]];
-    if (a == kGone || b == kGone) {
-      dropped.push_back(old.tally[k]);
+    const std::uint32_t a0 = inv[old.i[k]], b0 = inv[old.j[k]];
+    if (a0 == kGone || b0 == kGone) {
+      dest[k] = kRemoved;
       continue;
     }
-    items.push_back(a < b ? Item{a, b, k, false} : Item{b, a, k, true});
-  }
-  std::sort(items.begin(), items.end(),
-            [](const Item& u, const Item& v) { return u.a != v.a ? u.a < v.a : u.b < v.b; });
-  for (const Item& it : items) {
-    const auto beg = fresh.j.begin() + fresh.first[it.a];
-    const auto end = fresh.j.begin() + fresh.first[it.a + 1];
-    const auto pos = std::lower_bound(beg, end, it.b);
-    if (pos == end || *pos != it.b) {  // beyond the cut-off: cannot happen while the skin holds
-      dropped.push_back(old.tally[it.src]);
+    const bool flip = b0 < a0;  // history is "i relative to j"
+    const std::uint32_t a = flip ? b0 : a0, b = flip ? a0 : b0;
+    const auto beg = fresh.j.begin() + fresh.first[a];
+    const auto end = fresh.j.begin() + fresh.first[a + 1];
+    const auto pos = std::lower_bound(beg, end, b);
+    if (pos == end || *pos != b) {
+      dest[k] = kBeyond;
       continue;
     }
-    const std::size_t k = static_cast<std::size_t>(pos - fresh.j.begin());
-    ContactHistory h = old.history[it.src];
-    if (it.flip) h.xi = -h.xi, h.theta = -h.theta;  // both are "i relative to j"
-    fresh.history[k] = h;
-    fresh.tally[k] = old.tally[it.src];
-    fresh.state[k] = old.state[it.src];
+    const auto f = static_cast<std::size_t>(pos - fresh.j.begin());
+    dest[k] = static_cast<std::uint32_t>(f);
+    ContactHistory h = old.history[k];
+    if (flip) h.xi = -h.xi, h.theta = -h.theta;
+    fresh.history[f] = h;
+    fresh.tally[f] = old.tally[k];
+    fresh.state[f] = old.state[k];
   }
+  struct Beyond {
+    std::uint32_t a, b, src;
+  };
+  std::vector<Beyond> beyond;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (dest[k] == kRemoved) dropped.push_back(old.tally[k]);
+    if (dest[k] == kBeyond) {
+      const std::uint32_t a = inv[old.i[k]], b = inv[old.j[k]];
+      beyond.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(k)});
+    }
+  }
+  std::sort(beyond.begin(), beyond.end(),
+            [](const Beyond& u, const Beyond& v) { return u.a != v.a ? u.a < v.a : u.b < v.b; });
+  for (const Beyond& it : beyond) dropped.push_back(old.tally[it.src]);
 }
 
 }  // namespace lbdem::dem

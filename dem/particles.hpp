@@ -53,6 +53,8 @@ struct ParticleArrays {
   template <class T, class IndexVec>
   static void apply(std::vector<T>& a, const IndexVec& order) {
     std::vector<T> b(order.size());
+    // A gather per array, on all threads: a rebuild every few steps sorts every array.
+#pragma omp parallel for schedule(static) if (order.size() >= 4096)
     for (std::size_t k = 0; k < order.size(); ++k) b[k] = a[order[k]];
     a.swap(b);
   }
