@@ -89,7 +89,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   kernel_.interpolate_local(cell_vec_, u_p_);
   if (s_.pressure_gradient) {
     density_to_pressure(pressure_);
-    kernel_.pressure_gradient(pressure_, cell_vec_);  // the velocity is read: reuse its field
+    kernel_.pressure_gradient(pressure_, cell_vec_, true);  // the velocity is read: reuse its field
     kernel_.interpolate(eps_, cell_vec_, eps_p_, f_grad_);
   } else {
     kernel_.interpolate(eps_, eps_p_);

@@ -104,20 +104,23 @@ std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags
   return solid;
 }
 
-std::vector<int> ParticleKernel::active_planes(const std::uint8_t* planes, std::vector<double>& out,
-                                               int nc) const {
-  const int nz = grid_.nz();
+std::vector<int> ParticleKernel::listed_planes(const std::uint8_t* planes, bool active) const {
+  std::vector<int> list;
+  for (int z = 0; z < grid_.nz(); ++z)
+    if ((!planes || planes[z]) == active) list.push_back(z);
+  return list;
+}
+
+void ParticleKernel::zero_planes(const std::vector<int>& list, std::vector<double>& out,
+                                 int nc) const {
   const auto plane = std::size_t(grid_.nx()) * std::size_t(grid_.ny()) * std::size_t(nc);
-  std::vector<int> active;
-  active.reserve(std::size_t(nz));
-  for (int z = 0; z < nz; ++z) {
-    if (!planes || planes[z])
-      active.push_back(z);
-    else
-      std::fill(out.begin() + std::ptrdiff_t(std::size_t(z) * plane),
-                out.begin() + std::ptrdiff_t(std::size_t(z + 1) * plane), 0.0);
+  const int n = int(list.size());
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (int i = 0; i < n; ++i) {
+    const auto z = std::size_t(list[std::size_t(i)]);
+    std::fill(out.begin() + std::ptrdiff_t(z * plane),
+              out.begin() + std::ptrdiff_t((z + 1) * plane), 0.0);
   }
-  return active;
 }
 
 void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
@@ -127,7 +130,8 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
   // The planes to filter, listed so that the threads share them evenly (a bed fills the lower
   // planes of its column, which a static split over all planes would give one thread); the
   // others read 0.
-  const std::vector<int> active = active_planes(planes, out, nc);
+  const std::vector<int> active = listed_planes(planes, true);
+  zero_planes(listed_planes(planes, false), out, nc);
   if (axis != 0) return filter_planes(in, out, axis, active, nc);
   const bool wrap_x = grid_.periodic(0);
   const int na = int(active.size());
@@ -575,14 +579,18 @@ PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, doubl
   return r;
 }
 
-void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad) const {
+void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad,
+                                       bool reached_only) const {
   require_size(p.size(), std::size_t(grid_.cells()), "pressure field");
   const int n[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
   grad.assign(p.size(), Vec3::Zero());
+  const std::vector<int> active = listed_planes(reached_only ? planes(reach_) : nullptr, true);
+  const int na = int(active.size());
 #pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (int z = 0; z < n[2]; ++z)
+  for (int i = 0; i < na; ++i)
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
+        const int z = active[std::size_t(i)];
         const auto c = std::size_t(cell(x, y, z));
         if (!gas_[c]) continue;
         const int at[3] = {x, y, z};

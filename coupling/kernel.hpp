@@ -149,7 +149,10 @@ class ParticleKernel {
   /// (first order) where one neighbour is solid or outside the box, 0 where both are. One-sided
   /// rather than zero-flux because the gas pressure next to a wall is not flat (hydrostatic head,
   /// the Ergun drop of a bed): both forms are exact for a linear p. Solid cells read 0.
-  void pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad) const;
+  /// reached_only: only on the z planes the located particles' kernel reaches (the others read
+  /// 0), which are all that interpolate() reads of it at those particles.
+  void pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad,
+                         bool reached_only = false) const;
 
  private:
   // Fields of nc components are interleaved: component a of cell c at c * nc + a. Each component
@@ -161,9 +164,10 @@ class ParticleKernel {
   // filter_axis for axis 1 or 2 (a plane at a time), on the listed planes.
   void filter_planes(const std::vector<double>& in, std::vector<double>& out, int axis,
                      const std::vector<int>& active, int nc) const;
-  // The z planes where `planes` is nonzero (all if null), ascending; zeroes out's other planes.
-  std::vector<int> active_planes(const std::uint8_t* planes, std::vector<double>& out,
-                                 int nc) const;
+  // The z planes where `planes` is nonzero (active; all if null) or zero (not active), ascending.
+  std::vector<int> listed_planes(const std::uint8_t* planes, bool active) const;
+  // Sets the listed planes of a field of nc components to 0.
+  void zero_planes(const std::vector<int>& list, std::vector<double>& out, int nc) const;
   // G * in over all three axes (in is overwritten as scratch): the x and y passes on the planes
   // `xy`, the z pass on the planes `z` (null: all). Skipping a plane changes no bit of what is
   // computed elsewhere: a deposit's x and y passes see only zeros off the particles' planes, and

@@ -65,7 +65,8 @@ void DemSolver::rebuild() {
 
   p_.permute(order);
   // The new list is built in the storage of the one before the last (build_pairs resets all of
-  // it): no allocation and no first-touch page faults per rebuild.
+  // it): its arrays are not reallocated, nor their pages touched for the first time, while the
+  // pair count does not grow.
   std::swap(pairs_, spare_pairs_);
   const PairList& old_pairs = spare_pairs_;
   WallContactList old_wc = std::move(wc_);

@@ -7,8 +7,9 @@
 namespace lbdem::dem {
 
 namespace {
-// Below this many pairs a pass runs on one thread (an OpenMP region costs more than the work).
-constexpr std::size_t kParallelPairs = 4096;
+// Below this many pairs (or particles) a pass runs on one thread: an OpenMP region costs more
+// than the work.
+constexpr std::size_t kMinParallel = 4096;
 }  // namespace
 
 void PairList::resize(std::size_t n) {
@@ -16,10 +17,10 @@ void PairList::resize(std::size_t n) {
   history.resize(n);
   tally.resize(n);
   state.resize(n);
-  // resize() initialises only what is new; the rest, reused storage (the rebuild swaps two lists),
-  // is cleared on all threads: about 200 B per pair, a memory-bound pass that a rebuild every few
-  // steps repeats.
-#pragma omp parallel for schedule(static) if (n >= kParallelPairs)
+  // Reused storage (the rebuild swaps two lists) holds an older list's values: every pair is
+  // cleared, on all threads (169 B per pair, a memory-bound pass that a rebuild every few steps
+  // repeats). i and j are left as they are: build_pairs and the checkpoint overwrite them.
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
     history[k] = ContactHistory{};
     tally[k] = ContactTally{};
@@ -36,7 +37,7 @@ void PairList::build_transpose(std::size_t np) {
   for (std::size_t k = 0; k < size(); ++k) jslot[k] = fill[j[k]]++;
   j_force.resize(size());
   j_torque.resize(size());
-#pragma omp parallel for schedule(static) if (size() >= kParallelPairs)
+#pragma omp parallel for schedule(static) if (size() >= kMinParallel)
   for (std::size_t k = 0; k < size(); ++k) j_force[k] = j_torque[k] = Vec3::Zero();
 }
 
@@ -45,7 +46,7 @@ void CellList::build(const std::vector<Vec3>& x, const CellGrid& g) {
   const std::size_t nc = g.cells();
   start.assign(nc + 1, 0);
   std::vector<std::uint32_t> cell(x.size());
-#pragma omp parallel for schedule(static) if (x.size() >= kParallelPairs)
+#pragma omp parallel for schedule(static) if (x.size() >= kMinParallel)
   for (std::size_t p = 0; p < x.size(); ++p) cell[p] = static_cast<std::uint32_t>(g.cell_of(x[p]));
   for (std::size_t p = 0; p < x.size(); ++p) ++start[cell[p] + 1];
   for (std::size_t c = 0; c < nc; ++c) start[c + 1] += start[c];
@@ -195,7 +196,7 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
   constexpr std::uint32_t kNone = kGone, kRemoved = kGone - 1, kBeyond = kGone - 2;
   const std::size_t n = old.size();
   std::vector<std::uint32_t> dest(n);
-#pragma omp parallel for schedule(static) if (n >= kParallelPairs)
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
     dest[k] = kNone;
     if (!old.state[k]) continue;

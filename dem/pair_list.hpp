@@ -50,7 +50,9 @@ struct PairList {
   std::vector<Vec3> j_force, j_torque;
 
   std::size_t size() const { return i.size(); }
-  /// n pairs with zeroed springs, tallies and states; the j side is sized by build_transpose.
+  /// n pairs with zeroed springs, tallies and states (i and j keep whatever they held: the caller
+  /// writes them); the j side is sized by build_transpose. build_pairs resets every field, so a
+  /// list may be rebuilt in the storage of an older one: a new field must be reset there too.
   void resize(std::size_t n);
   /// Builds jfirst/jslot from (i, j) for n_particles particles (stable: ascending pair index) and
   /// zeroes the j-side loads.
