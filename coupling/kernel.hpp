@@ -157,16 +157,22 @@ class ParticleKernel {
  private:
   // Fields of nc components are interleaved: component a of cell c at c * nc + a. Each component
   // is filtered exactly as a scalar field alone would be (the same taps in the same order).
+  // The z planes a pass filters (on) and those it sets to 0 (off), ascending.
+  struct PlaneLists {
+    std::vector<int> on, off;
+  };
   // One filter pass along `axis`: out(c) = sum_k g(|k|) in(c + k e_axis), taps in a fixed order,
-  // on the z planes where `planes` is nonzero (all if null); the other planes of out read 0.
+  // on the planes listed on; the planes listed off read 0. The passes share their loops among the
+  // threads of the enclosing parallel region of filter() (orphaned worksharing): out must already
+  // have in's size.
   void filter_axis(const std::vector<double>& in, std::vector<double>& out, int axis,
-                   const std::uint8_t* planes, int nc) const;
+                   const PlaneLists& planes, int nc) const;
   // filter_axis for axis 1 or 2 (a plane at a time), on the listed planes.
   void filter_planes(const std::vector<double>& in, std::vector<double>& out, int axis,
                      const std::vector<int>& active, int nc) const;
   // The z planes where `planes` is nonzero (active; all if null) or zero (not active), ascending.
   std::vector<int> listed_planes(const std::uint8_t* planes, bool active) const;
-  // Sets the listed planes of a field of nc components to 0.
+  // Sets the listed planes of a field of nc components to 0 (shared as filter_axis, no barrier).
   void zero_planes(const std::vector<int>& list, std::vector<double>& out, int nc) const;
   // G * in over all three axes (in is overwritten as scratch): the x and y passes on the planes
   // `xy`, the z pass on the planes `z` (null: all). Skipping a plane changes no bit of what is
