@@ -6,7 +6,12 @@
 
 #include "lbm/lbm_solver.hpp"
 
+#include <omp.h>
+
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 using namespace lbdem;
 using namespace lbdem::lbm;
@@ -165,4 +170,31 @@ TEST_CASE("Porous medium: a step in the fluid fraction", "[lbm]") {
     }
     CHECK(transverse < 1e-14);
   }
+}
+
+TEST_CASE("Porous medium: a bad porosity field names its first cell at any thread count", "[lbm]") {
+  // Input error path of LbmSolver::set_porosity_field, which fills the lattice row by row on all
+  // threads: the message must name the first bad cell in compact order (x fastest), not the one a
+  // thread happened to reach first. Bad cells in a low row (1, 2, 0) and a high one (4, 7, 5).
+  LbmSettings s;
+  s.nx = 6;
+  s.ny = 8;
+  s.nz = 6;
+  const std::size_t n = std::size_t(s.nx) * std::size_t(s.ny) * std::size_t(s.nz);
+  std::vector<double> eps(n, 0.5), alpha(n, 0.0);
+  eps[std::size_t(4 + 6 * (7 + 8 * 5))] = 1.5;
+  alpha[std::size_t(1 + 6 * (2 + 8 * 0))] = -1.0;
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    LbmSolver lbm(s);
+    std::string what;
+    try {
+      lbm.set_porosity_field(eps, alpha);
+    } catch (const std::invalid_argument& e) {
+      what = e.what();
+    }
+    CHECK(what.find("cell (1, 2, 0)") != std::string::npos);
+  }
+  omp_set_num_threads(saved);
 }
