@@ -455,10 +455,9 @@ void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v, int
 }
 
 template <int NC>
-void ParticleKernel::deposit_components(const std::vector<double>& qs,
-                                        std::vector<double>& dep) const {
-  std::vector<double> binned(qs.size());
+void ParticleKernel::deposit_components(const double* qs, std::vector<double>& dep) const {
   const std::size_t np = particle_count();
+  std::vector<double> binned(NC * np);
 #pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
   for (std::size_t k = 0; k < np; ++k)
     for (int a = 0; a < NC; ++a)
@@ -470,7 +469,7 @@ void ParticleKernel::deposit_components(const std::vector<double>& qs,
 
 void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  deposit_components<1>(std::vector<double>(q.begin(), q.end()), out);
+  deposit_components<1>(q.data(), out);
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? out[c] * inv_v : 0.0;
@@ -478,9 +477,8 @@ void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out
 
 void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  const auto* flat = reinterpret_cast<const double*>(q.data());
   std::vector<double> dep;
-  deposit_components<3>(std::vector<double>(flat, flat + 3 * q.size()), dep);
+  deposit_components<3>(reinterpret_cast<const double*>(q.data()), dep);
   const auto ncell = std::size_t(grid_.cells());
   out.resize(ncell);
   const double inv_v = 1.0 / cell_volume();
@@ -499,7 +497,7 @@ void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
     qs[4 * p] = q[p];
     for (int a = 0; a < 3; ++a) qs[4 * p + 1 + std::size_t(a)] = v[p][a];
   }
-  deposit_components<4>(qs, dep);
+  deposit_components<4>(qs.data(), dep);
   const auto ncell = std::size_t(grid_.cells());
   out_q.resize(ncell);
   out_v.resize(ncell);

@@ -192,9 +192,10 @@ class ParticleKernel {
   void sample_local(const double* field, double* out) const;
   // v = (G * (m in)) / Z, the field each source cell reads (in, of nc components, is overwritten).
   void smooth(std::vector<double>& in, std::vector<double>& v, int nc) const;
-  // The deposit of NC components per particle (qs in particle order), unscaled: G * src.
+  // The deposit of NC components per particle (qs: NC values per particle, in particle order),
+  // unscaled: G * src.
   template <int NC>
-  void deposit_components(const std::vector<double>& qs, std::vector<double>& dep) const;
+  void deposit_components(const double* qs, std::vector<double>& dep) const;
   Index cell(int x, int y, int z) const { return grid_.compact_index(x, y, z); }
 
   lbm::Grid grid_;

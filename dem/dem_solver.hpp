@@ -129,7 +129,9 @@ class DemSolver {
   std::vector<Wall> walls_;
   PairList pairs_;
   // The last rebuild's old list, kept as storage for the next (dem_rebuild.cpp): one more list
-  // resident between rebuilds (about 230 B per pair), which a rebuild held at its peak anyway.
+  // resident between rebuilds, about 230 B per pair (settled bed: 2,231 instead of 1,688 B per
+  // particle at N = 100,352), against page faults on fresh arrays at every rebuild (default jet
+  // mill: neighbour search 5.5 s instead of 7.3-7.7 s).
   PairList spare_pairs_;
   WallContactList wc_;
   CollisionStats stats_;
