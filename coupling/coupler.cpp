@@ -39,7 +39,10 @@ void Coupler::pressure(std::vector<double>& p) const {
 }
 
 void Coupler::density_to_pressure(std::vector<double>& p) const {
-  for (double& v : p) v = v > 0 ? units_.pressure_to_si((v - 1.0) * lbm::kCs2) : 0.0;  // solid: 0
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) if (n >= std::size_t(ParticleKernel::kMinParallelCells))
+  for (std::size_t c = 0; c < n; ++c)
+    p[c] = p[c] > 0 ? units_.pressure_to_si((p[c] - 1.0) * lbm::kCs2) : 0.0;  // solid: 0
 }
 
 Vec3 Coupler::gas_momentum() const {

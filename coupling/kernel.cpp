@@ -37,6 +37,15 @@ void require_size(std::size_t got, std::size_t want, const char* what) {
 
 }  // namespace
 
+namespace {
+// Sizes a reused buffer to at least n entries. It only grows: the exchange alternates between
+// fields of 1, 3 and 4 components, and shrinking and growing again would zero-fill the regrown
+// part on one thread at every call. Readers index by cell and component, never by size().
+void grow(std::vector<double>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+}  // namespace
+
 ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
                                std::span<const std::uint8_t> solid)
     : grid_(grid), frame_(frame), width_(width), dx_(frame.dx) {
@@ -209,7 +218,7 @@ void ParticleKernel::filter_planes(const std::vector<double>& in, std::vector<do
 
 void ParticleKernel::filter(std::vector<double>& in, std::vector<double>& out, int nc,
                             const std::uint8_t* xy, const std::uint8_t* z) const {
-  out.resize(in.size());
+  grow(out, in.size());
   // The planes to filter, listed so that the threads share them evenly (a bed fills the lower
   // planes of its column, which a static split over all planes would give one thread); the
   // others read 0. The three passes share one parallel region (the barrier at the end of each
@@ -360,22 +369,27 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
 template <int NC>
 void ParticleKernel::gather_sources(const std::vector<double>& qs, std::vector<double>& src) const {
   const auto ncell = std::size_t(grid_.cells());
-  src.assign(ncell * NC, 0.0);
-  if (bin_start_.empty()) return;  // before the first locate(): no particles
+  if (bin_start_.empty()) return src.assign(ncell * NC, 0.0);  // before the first locate()
+  grow(src, ncell * NC);                                       // every plane is cleared below
   // Each cell receives its terms in the order of a per-cell gather over its 8 bins: corner 0
   // first, each bin's particles by index. Cell plane z is written by one thread only, from two
   // bin planes: corners 0-3 from the particles whose lower trilinear plane is z, corners 4-7
   // from those whose lower plane is z - 1 (wrapped). So the planes run in parallel without races
-  // or atomics, in one parallel region, at a cost of 8 per particle.
+  // or atomics, in one parallel region, at a cost of 8 per particle; the same thread clears the
+  // plane first and scales it by 1/Z last.
   const int nz = grid_.nz();
   const bool wrap = grid_.periodic(2);
   const Index per_plane = Index(bins_[0]) * bins_[1];
+  const auto plane = std::size_t(grid_.nx()) * std::size_t(grid_.ny());
   // Bin plane of the particles whose lower trilinear plane is i (-1 allowed on a non-periodic
   // axis).
   const auto bin_plane = [&](int i) { return wrap ? (i + nz) % nz : i + 1; };
   // Dynamic: a bed fills the lower planes only, which a static split would give one thread.
-#pragma omp parallel for schedule(dynamic, 1) if (particle_count() >= kMinParallelParticles)
-  for (int z = 0; z < nz; ++z)
+#pragma omp parallel for schedule(dynamic, 1) if (particle_count() >= kMinParallelParticles || \
+                                                  grid_.cells() >= kMinParallelCells)
+  for (int z = 0; z < nz; ++z) {
+    double* s = src.data() + std::size_t(z) * plane * NC;
+    std::fill(s, s + plane * NC, 0.0);
     for (int corner = 0; corner < 8; ++corner) {
       const int b = bin_plane(corner < 4 ? z : z - 1);
       for (Index k = bin_start_[std::size_t(b * per_plane)];
@@ -387,9 +401,10 @@ void ParticleKernel::gather_sources(const std::vector<double>& qs, std::vector<d
           src[c * NC + std::size_t(a)] += w * qs[std::size_t(k) * NC + std::size_t(a)];
       }
     }
-#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < ncell; ++c)
-    for (int a = 0; a < NC; ++a) src[c * NC + std::size_t(a)] *= inv_z_[c];
+    const double* iz = inv_z_.data() + std::size_t(z) * plane;
+    for (std::size_t c = 0; c < plane; ++c)
+      for (int a = 0; a < NC; ++a) s[c * NC + std::size_t(a)] *= iz[c];
+  }
 }
 
 template <int NC>
@@ -455,30 +470,31 @@ void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v, int
 }
 
 template <int NC>
-void ParticleKernel::deposit_components(const double* qs, std::vector<double>& dep) const {
+const std::vector<double>& ParticleKernel::deposit_components(const double* qs) const {
   const std::size_t np = particle_count();
-  std::vector<double> binned(NC * np);
+  std::vector<double>& binned = work_binned_;
+  grow(binned, NC * np);
 #pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
   for (std::size_t k = 0; k < np; ++k)
     for (int a = 0; a < NC; ++a)
       binned[k * NC + std::size_t(a)] = qs[std::size_t(bin_items_[k]) * NC + std::size_t(a)];
-  std::vector<double> src;
-  gather_sources<NC>(binned, src);
-  filter(src, dep, NC, planes(occupied_), planes(reach_));
+  gather_sources<NC>(binned, work_in_);
+  filter(work_in_, work_out_, NC, planes(occupied_), planes(reach_));
+  return work_out_;
 }
 
 void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  deposit_components<1>(q.data(), out);
+  const std::vector<double>& dep = deposit_components<1>(q.data());
+  out.resize(std::size_t(grid_.cells()));
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? out[c] * inv_v : 0.0;
+  for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? dep[c] * inv_v : 0.0;
 }
 
 void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const {
   require_size(q.size(), particle_count(), "deposit input");
-  std::vector<double> dep;
-  deposit_components<3>(reinterpret_cast<const double*>(q.data()), dep);
+  const std::vector<double>& dep = deposit_components<3>(reinterpret_cast<const double*>(q.data()));
   const auto ncell = std::size_t(grid_.cells());
   out.resize(ncell);
   const double inv_v = 1.0 / cell_volume();
@@ -491,13 +507,14 @@ void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
                              std::vector<double>& out_q, std::vector<Vec3>& out_v) const {
   require_size(q.size(), particle_count(), "deposit input");
   require_size(v.size(), particle_count(), "deposit input");
-  std::vector<double> qs(4 * q.size()), dep;
+  std::vector<double>& qs = work_q_;
+  grow(qs, 4 * q.size());
 #pragma omp parallel for schedule(static) if (q.size() >= kMinParallelParticles)
   for (std::size_t p = 0; p < q.size(); ++p) {
     qs[4 * p] = q[p];
     for (int a = 0; a < 3; ++a) qs[4 * p + 1 + std::size_t(a)] = v[p][a];
   }
-  deposit_components<4>(qs.data(), dep);
+  const std::vector<double>& dep = deposit_components<4>(qs.data());
   const auto ncell = std::size_t(grid_.cells());
   out_q.resize(ncell);
   out_v.resize(ncell);
@@ -513,19 +530,25 @@ void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
 // Transpose of deposit(): v(c) = sum_c' m(c') G(c' - c) field(c') / Z(c), then trilinear weights.
 void ParticleKernel::interpolate(std::span<const double> field, std::vector<double>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
-  std::vector<double> in(field.begin(), field.end()), v;
-  smooth(in, v, 1);
+  const auto n = field.size();
+  grow(work_in_, n);
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < n; ++c) work_in_[c] = field[c];
+  smooth(work_in_, work_out_, 1);
   out.resize(particle_count());
-  sample<1>(v.data(), out.data());
+  sample<1>(work_out_.data(), out.data());
 }
 
 void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
   const auto* flat = reinterpret_cast<const double*>(field.data());
-  std::vector<double> in(flat, flat + 3 * field.size()), v;
-  smooth(in, v, 3);
+  const auto n = 3 * field.size();
+  grow(work_in_, n);
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t i = 0; i < n; ++i) work_in_[i] = flat[i];
+  smooth(work_in_, work_out_, 3);
   out.resize(particle_count());
-  sample<3>(v.data(), reinterpret_cast<double*>(out.data()));
+  sample<3>(work_out_.data(), reinterpret_cast<double*>(out.data()));
 }
 
 void ParticleKernel::interpolate(std::span<const double> field, std::span<const Vec3> vfield,
@@ -533,16 +556,18 @@ void ParticleKernel::interpolate(std::span<const double> field, std::span<const 
   const auto ncell = std::size_t(grid_.cells());
   require_size(field.size(), ncell, "interpolated field");
   require_size(vfield.size(), ncell, "interpolated field");
-  std::vector<double> in(4 * ncell), v;
+  std::vector<double>& in = work_in_;
+  grow(in, 4 * ncell);
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < ncell; ++c) {
     in[4 * c] = field[c];
     for (int a = 0; a < 3; ++a) in[4 * c + 1 + std::size_t(a)] = vfield[c][a];
   }
-  smooth(in, v, 4);
+  smooth(in, work_out_, 4);
   const std::size_t np = particle_count();
-  std::vector<double> both(4 * np);
-  sample<4>(v.data(), both.data());
+  std::vector<double>& both = work_q_;
+  grow(both, 4 * np);
+  sample<4>(work_out_.data(), both.data());
   out.resize(np);
   vout.resize(np);
 #pragma omp parallel for schedule(static) if (np >= kMinParallelParticles)
@@ -561,25 +586,35 @@ PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, doubl
 #pragma omp parallel for schedule(static) if (radii.size() >= kMinParallelParticles)
   for (std::size_t p = 0; p < radii.size(); ++p) vol[p] = 4.0 / 3.0 * kPi * std::pow(radii[p], 3);
   deposit(vol, eps);  // solid fraction phi
-  PorosityReport r;
-  for (std::size_t c = 0; c < eps.size(); ++c) {
+  // Over the cells in parallel: the report's figures are reductions that do not depend on the
+  // order (a count, a least index, a least value), so they are the same for any thread count.
+  const std::size_t ncell = eps.size();
+  Index clipped = 0;
+  std::size_t first = ncell;
+  double lowest = 1.0;
+#pragma omp parallel for schedule(static) reduction(+ : clipped) reduction(min : first, lowest) \
+    if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t c = 0; c < ncell; ++c) {
     if (!gas_[c]) {
       eps[c] = 1.0;
       continue;
     }
     const double e = 1.0 - eps[c];
-    r.lowest = std::min(r.lowest, e);
+    lowest = std::min(lowest, e);
     if (e < eps_min) {
-      if (r.clipped++ == 0) {
-        const auto xyz =
-            std::array<Index, 3>{Index(c) % grid_.nx(), Index(c) / grid_.nx() % grid_.ny(),
-                                 Index(c) / (Index(grid_.nx()) * grid_.ny())};
-        r.first = {int(xyz[0]), int(xyz[1]), int(xyz[2])};
-      }
+      ++clipped;
+      first = std::min(first, c);
       eps[c] = eps_min;
     } else {
       eps[c] = e;
     }
+  }
+  PorosityReport r;
+  r.lowest = lowest;
+  r.clipped = clipped;
+  if (clipped) {
+    const auto nx = std::size_t(grid_.nx()), ny = std::size_t(grid_.ny());
+    r.first = {int(first % nx), int(first / nx % ny), int(first / (nx * ny))};
   }
   return r;
 }
@@ -588,14 +623,17 @@ void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Ve
                                        bool reached_only) const {
   require_size(p.size(), std::size_t(grid_.cells()), "pressure field");
   const int n[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
-  grad.assign(p.size(), Vec3::Zero());
-  const std::vector<int> active = listed_planes(reached_only ? planes(reach_) : nullptr, true);
-  const int na = int(active.size());
-#pragma omp parallel for collapse(2) schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (int i = 0; i < na; ++i)
+  grad.resize(p.size());  // every cell is written below
+  const auto plane = std::size_t(n[0]) * std::size_t(n[1]);
+  // Dynamic: the reached planes of a bed are the lower ones, which a static split would give one
+  // thread; the others are only cleared.
+#pragma omp parallel for schedule(dynamic, 1) if (grid_.cells() >= kMinParallelCells)
+  for (int z = 0; z < n[2]; ++z) {
+    Vec3* gz = grad.data() + std::size_t(z) * plane;
+    std::fill(gz, gz + plane, Vec3::Zero());
+    if (reached_only && !reach_[std::size_t(z)]) continue;
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
-        const int z = active[std::size_t(i)];
         const auto c = std::size_t(cell(x, y, z));
         if (!gas_[c]) continue;
         const int at[3] = {x, y, z};
@@ -618,6 +656,7 @@ void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Ve
             grad[c][a] = (p[c] - p[nb[0]]) / dx_;
         }
       }
+  }
 }
 
 }  // namespace lbdem::coupling

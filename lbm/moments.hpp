@@ -26,28 +26,52 @@ CellMoments cell_moments_at(const PdfField<T>& pdf, AaState s, const Forcing& fo
   return forcing.moments(f, pdf.grid().index(x, y, z), force);
 }
 
+namespace detail {
+// One x range of moment_fields: a branch-free loop (solid cells masked by a select, which also
+// hides whatever their slots hold), so that GCC vectorises it across cells. Measured on the
+// default fluidized bed (6,000 cells, to 0.2 s, 1 thread): the coupling's moments of every
+// exchange took 0.57 s with the per-cell branches of before.
+template <bool kRho, bool kU, class T, class Forcing>
+void moment_range(const T* const (&in)[kQ], const Forcing& forcing, const FlagField& flags,
+                  Index n0, int count, double* rho, double* u) {
+#pragma omp simd
+  for (int i = 0; i < count; ++i) {
+    double f[kQ];
+    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = PopulationCodec<T>::load(in[q][i], q); });
+    CellForce force;
+    const CellMoments m = forcing.moments(f, n0 + i, force);
+    const bool fluid = flags.fluid(n0 + i);
+    if constexpr (kRho) rho[i] = fluid ? m.rho : 0.0;
+    if constexpr (kU) {
+      u[3 * i] = fluid ? m.ux : 0.0;
+      u[3 * i + 1] = fluid ? m.uy : 0.0;
+      u[3 * i + 2] = fluid ? m.uz : 0.0;
+    }
+  }
+}
+}  // namespace detail
+
 /// Fills rho and/or u (either may be null) for every interior cell.
 template <class T, class Forcing>
 void moment_fields(const PdfField<T>& pdf, AaState s, const Forcing& forcing,
                    const FlagField& flags, std::vector<double>* rho, std::vector<Vec3>* u) {
   const Grid& g = pdf.grid();
-  if (rho) rho->assign(std::size_t(g.cells()), 0.0);
-  if (u) u->assign(std::size_t(g.cells()), Vec3::Zero());
+  if (rho) rho->resize(std::size_t(g.cells()));  // every entry is written below
+  if (u) u->resize(std::size_t(g.cells()));
+  double* r = rho ? rho->data() : nullptr;
+  double* v = u ? reinterpret_cast<double*>(u->data()) : nullptr;
   for_each_row(g, [&](int y, int z) {
     for_each_x_range(g, [&](int x0, int x1) {
       const T* in[kQ];
       read_pointers(pdf, s, x0, y, z, in);
-      for (int i = 0; i < x1 - x0; ++i) {
-        const Index n = g.index(x0 + i, y, z);
-        if (!flags.fluid(n)) continue;
-        double f[kQ];
-        for (int q = 0; q < kQ; ++q) f[q] = PopulationCodec<T>::load(in[q][i], q);
-        CellForce force;
-        const CellMoments m = forcing.moments(f, n, force);
-        const auto c = std::size_t(g.compact_index(x0 + i, y, z));
-        if (rho) (*rho)[c] = m.rho;
-        if (u) (*u)[c] = Vec3(m.ux, m.uy, m.uz);
-      }
+      const Index n0 = g.index(x0, y, z);
+      const auto c = std::size_t(g.compact_index(x0, y, z));  // x is contiguous in both orders
+      if (r && v)
+        detail::moment_range<true, true>(in, forcing, flags, n0, x1 - x0, r + c, v + 3 * c);
+      else if (r)
+        detail::moment_range<true, false>(in, forcing, flags, n0, x1 - x0, r + c, nullptr);
+      else if (v)
+        detail::moment_range<false, true>(in, forcing, flags, n0, x1 - x0, nullptr, v + 3 * c);
     });
   });
 }

@@ -419,9 +419,21 @@ TEST_CASE("Kernel: clipping reports the count and the first clipped cell", "[cou
   const double vp = phi_centre / (t[0] * t[0] * t[0]) * kDx * kDx * kDx;
   const int cx = 5, cy = 6, cz = 7;
   kernel.locate(std::vector<Vec3>{kFrame.cell_centre(cx, cy, cz)});
+  // The report is reduced over the cells in parallel (16^3 cells: above the serial threshold);
+  // 1 and 2 threads must give the same count, first cell and lowest value.
+  REQUIRE(g.cells() >= ParticleKernel::kMinParallelCells);
+  const int saved = omp_get_max_threads();
   std::vector<double> eps;
+  omp_set_num_threads(2);
+  const PorosityReport r2 =
+      kernel.gas_fraction(std::vector<double>{std::cbrt(vp * 3 / (4 * kPi))}, eps_min, eps);
+  omp_set_num_threads(1);
   const PorosityReport r =
       kernel.gas_fraction(std::vector<double>{std::cbrt(vp * 3 / (4 * kPi))}, eps_min, eps);
+  omp_set_num_threads(saved);
+  CHECK(r2.clipped == r.clipped);
+  CHECK(r2.first == r.first);
+  CHECK(r2.lowest == r.lowest);
   Index expect = 0;
   std::array<int, 3> first = {-1, -1, -1};
   for (int dz = -h; dz <= h; ++dz)
