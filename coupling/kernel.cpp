@@ -35,15 +35,14 @@ void require_size(std::size_t got, std::size_t want, const char* what) {
                                 std::to_string(got) + " entries, expected " + std::to_string(want));
 }
 
-}  // namespace
-
-namespace {
 // Sizes a reused buffer to at least n entries. It only grows: the exchange alternates between
 // fields of 1, 3 and 4 components, and shrinking and growing again would zero-fill the regrown
-// part on one thread at every call. Readers index by cell and component, never by size().
+// part on one thread at every call. So a buffer may be longer than a call needs: the passes
+// index it by cell and component, and only what a call wrote first is read.
 void grow(std::vector<double>& v, std::size_t n) {
   if (v.size() < n) v.resize(n);
 }
+
 }  // namespace
 
 ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
@@ -624,6 +623,7 @@ void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Ve
   require_size(p.size(), std::size_t(grid_.cells()), "pressure field");
   const int n[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
   grad.resize(p.size());  // every cell is written below
+  const std::uint8_t* reached = reached_only ? planes(reach_) : nullptr;  // null: every plane
   const auto plane = std::size_t(n[0]) * std::size_t(n[1]);
   // Dynamic: the reached planes of a bed are the lower ones, which a static split would give one
   // thread; the others are only cleared.
@@ -631,7 +631,7 @@ void ParticleKernel::pressure_gradient(std::span<const double> p, std::vector<Ve
   for (int z = 0; z < n[2]; ++z) {
     Vec3* gz = grad.data() + std::size_t(z) * plane;
     std::fill(gz, gz + plane, Vec3::Zero());
-    if (reached_only && !reach_[std::size_t(z)]) continue;
+    if (reached && !reached[z]) continue;
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
         const auto c = std::size_t(cell(x, y, z));

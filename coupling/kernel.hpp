@@ -81,11 +81,14 @@ struct PorosityReport {
   double lowest = 1.0;                      // smallest 1 - phi before clipping
 };
 
+/// Not thread-safe: its const calls reuse internal buffers, so one kernel serves one caller at a
+/// time (each call is parallel inside).
 class ParticleKernel {
  public:
   /// Below these sizes a loop runs on one thread: an OpenMP region costs microseconds (milliseconds
   /// on an oversubscribed machine), more than the work, and a particle sweep makes dozens. Results
-  /// do not depend on it (every loop writes each entry from one thread in a fixed order).
+  /// do not depend on it (every loop writes each entry from one thread in a fixed order, and the
+  /// clipping report of gas_fraction() is a count, a least index and a least value).
   static constexpr Index kMinParallelCells = 4096;
   static constexpr std::size_t kMinParallelParticles = 1024;
 
@@ -229,8 +232,8 @@ class ParticleKernel {
   std::vector<Index> scratch_bin_;
   // Buffers of the deposits and interpolations, kept between calls: a fresh vector is zero-filled
   // by one thread, which on the default fluidized bed's 6,000 cells was a fifth of a deposit on
-  // 2 threads. Every entry is written before it is read. Mutable: the calls are const and are
-  // never made concurrently on one kernel.
+  // 2 threads. A call reads only entries it wrote first. Mutable, so the const calls of one
+  // kernel must not run concurrently (class comment). About 64 B per cell and per particle.
   mutable std::vector<double> work_q_;       // per particle, nc values each, particle order
   mutable std::vector<double> work_binned_;  // the same in bin order
   mutable std::vector<double> work_in_;      // per cell, nc values each: filter input (scratch)
