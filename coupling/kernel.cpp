@@ -526,28 +526,27 @@ void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
   }
 }
 
+const std::vector<double>& ParticleKernel::smoothed(const double* field, int nc) const {
+  const auto n = std::size_t(grid_.cells()) * std::size_t(nc);
+  grow(work_in_, n);
+#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
+  for (std::size_t i = 0; i < n; ++i) work_in_[i] = field[i];
+  smooth(work_in_, work_out_, nc);
+  return work_out_;
+}
+
 // Transpose of deposit(): v(c) = sum_c' m(c') G(c' - c) field(c') / Z(c), then trilinear weights.
 void ParticleKernel::interpolate(std::span<const double> field, std::vector<double>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
-  const auto n = field.size();
-  grow(work_in_, n);
-#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < n; ++c) work_in_[c] = field[c];
-  smooth(work_in_, work_out_, 1);
   out.resize(particle_count());
-  sample<1>(work_out_.data(), out.data());
+  sample<1>(smoothed(field.data(), 1).data(), out.data());
 }
 
 void ParticleKernel::interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
-  const auto* flat = reinterpret_cast<const double*>(field.data());
-  const auto n = 3 * field.size();
-  grow(work_in_, n);
-#pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t i = 0; i < n; ++i) work_in_[i] = flat[i];
-  smooth(work_in_, work_out_, 3);
   out.resize(particle_count());
-  sample<3>(work_out_.data(), reinterpret_cast<double*>(out.data()));
+  sample<3>(smoothed(reinterpret_cast<const double*>(field.data()), 3).data(),
+            reinterpret_cast<double*>(out.data()));
 }
 
 void ParticleKernel::interpolate(std::span<const double> field, std::span<const Vec3> vfield,

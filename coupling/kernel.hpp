@@ -195,6 +195,8 @@ class ParticleKernel {
   void sample_local(const double* field, double* out) const;
   // v = (G * (m in)) / Z, the field each source cell reads (in, of nc components, is overwritten).
   void smooth(std::vector<double>& in, std::vector<double>& v, int nc) const;
+  // smooth() of a copy of field (nc values per cell), in work_out_.
+  const std::vector<double>& smoothed(const double* field, int nc) const;
   // The deposit of NC components per particle (qs: NC values per particle, in particle order),
   // unscaled: G * src, in work_out_ (qs may be work_q_).
   template <int NC>
