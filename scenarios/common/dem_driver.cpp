@@ -59,6 +59,17 @@ struct SignalHandlers {
   void (*term_)(int) = SIG_DFL;
 };
 SignalHandlers g_old_handlers;
+
+// The sums of the checkpoint just written (run_cost.hpp): the run's cost over all its invocations.
+void log_cost(Log& log, const std::string& dir) {
+  const auto c = read_run_cost(dir + "/checkpoint.h5");
+  if (!c || !(c->to_s > c->from_s)) return;
+  const double span = c->to_s - c->from_s;
+  log.line("stepping wall time over all invocations since t = " + to_text(c->from_s) +
+           " s: " + to_text(c->wall_s) + " s for " + to_text(span) + " simulated s (" +
+           to_text(c->wall_s / span) + " s/s)");
+}
+
 void restore_signals() {
   std::signal(SIGINT, g_old_handlers.int_);
   std::signal(SIGTERM, g_old_handlers.term_);
@@ -215,6 +226,7 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
   f.write("/rate_reference", std::vector<double>{prev_t_, double(prev_pp_), double(prev_pw_)});
   solver_.save(f);
   if (hooks_.save) hooks_.save(f);
+  cost_.save(f, solver_.time());
   f.commit();
 }
 
@@ -231,12 +243,14 @@ int DemDriver::run(const RunContext& ctx) {
     snapshot_times_ = f.doubles("/snapshot_times_s");
     solver_.load(f);
     if (hooks_.load) hooks_.load(f);
+    cost_.resume(f, solver_.time());
     ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
     const auto prev = f.doubles("/rate_reference");
     prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
     ctx.log->line("resumed from " + ckpt + " at t = " + to_text(solver_.time()) + " s (step " +
                   std::to_string(solver_.steps()) + ")");
   } else {
+    cost_.begin(solver_.time());
     stored0 = solver_.energy().stored();
     ts_.open(ctx.dir + "/timeseries.csv", cols, -1);
     write_row(stored0);
@@ -259,6 +273,7 @@ int DemDriver::run(const RunContext& ctx) {
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
       progress.finish();
       restore_signals();
+      log_cost(*ctx.log, ctx.dir);
       throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) +
                         " at t = " + to_text(solver_.time()) + " s; checkpoint written");
     }
@@ -293,6 +308,7 @@ int DemDriver::run(const RunContext& ctx) {
                 std::to_string(solver_.steps()) + " steps; energy balance error " +
                 to_text(e.stored() + e.dissipated() - injected) + " J of " +
                 to_text(injected - e.stored()) + " J dissipated or stored away");
+  log_cost(*ctx.log, ctx.dir);
   return 0;
 }
 

@@ -15,6 +15,7 @@
 #include "core/time_series.hpp"
 #include "dem/dem_solver.hpp"
 #include "scenarios/common/run_context.hpp"
+#include "scenarios/common/run_cost.hpp"
 
 namespace lbdem {
 class Progress;
@@ -84,6 +85,7 @@ class DemDriver {
   std::int64_t prev_pp_ = 0, prev_pw_ = 0;
   TimeSeries ts_;
   Log* log_ = nullptr;
+  RunCostMeter cost_;
 };
 
 /// Derived DEM numbers for the start-up banner (DESIGN §3). The radius range counts a feed's

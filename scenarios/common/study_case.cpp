@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
+#include "scenarios/common/run_cost.hpp"
 #include "scenarios/run_command.hpp"
 
 namespace lbdem::scenarios {
@@ -62,6 +64,13 @@ std::pair<double, double> read_timing(const std::string& dir) {
   double wall = 0, simulated = 0;
   if (!(in >> wall >> simulated)) return {0.0, 0.0};
   return {wall, simulated};
+}
+
+double timed_from(const std::string& dir) {
+  std::ifstream in(dir + "/study_timing.txt");
+  double wall = 0, simulated = 0, from = 0;
+  if (!(in >> wall >> simulated)) return std::nan("");
+  return (in >> from) ? from : 0.0;
 }
 
 std::vector<std::pair<std::string, double>> read_phase_table(const std::string& log,
@@ -215,7 +224,8 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
     const double top = std::max({p.gas, p.dem, p.coupling});
     bound = top == p.gas ? "gas" : top == p.dem ? "DEM" : "exchange";
   }
-  return out + "," + bound;
+  const double from = timed_from(dir);
+  return out + "," + bound + "," + (std::isnan(from) ? std::string() : num(from));
 }
 
 int run_study_case(const std::string& root, const StudyCase& c, const StudyOptions& opt,
@@ -263,6 +273,18 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // A stopped run (130: a signal, checkpoint written) still adds its wall time to the case's.
   if (rc != 0 && rc != 130) return rc;
+  // Sums the run keeps in its checkpoint (run_cost.hpp) cover every invocation, a killed one up
+  // to its last checkpoint; they replace the sums below, which miss the invocations that never
+  // returned here.
+  if (const auto cost = read_run_cost(dir + "/checkpoint.h5")) {
+    write_file_atomic(dir + "/study_timing.txt", full(cost->wall_s) + " " +
+                                                     full(cost->to_s - cost->from_s) + " " +
+                                                     full(cost->from_s) + "\n");
+    std::string text;
+    for (const auto& [name, sec] : cost->phases) text += full(sec) + "\t" + name + "\n";
+    write_file_atomic(dir + "/study_phases.txt", text);
+    return rc;
+  }
   const double t_after = last_time(dir + "/timeseries.csv");
   const auto [wall0, sim0] = read_timing(dir);
   write_file_atomic(

@@ -2,7 +2,9 @@
 // What every `./lbdem study` does per case: run it into ROOT/NAME from its preset, or resume it if
 // it stopped (or if --end-time asks for more), and keep the wall and simulated time summed over the
 // invocations that advanced it (study_timing.txt), so a table can give wall time per simulated
-// second however often the case was resumed.
+// second however often the case was resumed. Those sums come from the run's checkpoint
+// (run_cost.hpp), which also counts invocations killed without warning; cases run before it kept
+// them were summed here, over the invocations that returned.
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +31,9 @@ void check_case_names(const std::vector<std::string>& wanted, const std::vector<
 double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
 std::pair<double, double> read_timing(const std::string& dir);
+/// The simulated time where those sums begin: 0 for a run timed from its start, later for one
+/// whose first invocations left no sums (killed before run_cost.hpp kept them); NaN: no timing.
+double timed_from(const std::string& dir);
 
 /// The phase table a run writes at the end of its log.txt ("wall time by phase"), the last one at
 /// or after byte `from`: (phase, seconds) in the log's order; empty if there is none.
@@ -54,7 +59,7 @@ PartCosts part_costs(const std::string& dir);
 /// of the case's time, which bounds the speed-up.
 inline constexpr const char* kSpeedupColumns =
     "gas_s_per_simulated_s,dem_s_per_simulated_s,coupling_s_per_simulated_s,speedup,"
-    "dem_speedup,dem_ideal_speedup,gas_speedup,gas_ideal_speedup,bounded_by";
+    "dem_speedup,dem_ideal_speedup,gas_speedup,gas_ideal_speedup,bounded_by,timed_from_s";
 /// parcels, parcels_ref: the parcel counts where the banner's start count is not the run's (a
 /// feed); 0: the banners' "particles".
 std::string speedup_columns(const std::string& dir, const std::string& ref_dir, double parcels = 0,

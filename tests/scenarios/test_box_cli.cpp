@@ -12,6 +12,7 @@
 #include "core/h5.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/resume_check.hpp"
+#include "scenarios/common/run_cost.hpp"
 
 namespace fs = std::filesystem;
 
@@ -58,7 +59,21 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   REQUIRE(cli("run box --out " + full + kSmall).code == 0);
   // Stop at the checkpoint at 0.03 s, then continue to 0.06 s.
   REQUIRE(cli("run box --out " + part + kSmall + " --set run.end_time=0.03").code == 0);
+  const auto first = lbdem::scenarios::read_run_cost(part + "/checkpoint.h5");
   REQUIRE(cli("run --resume " + part + " --set run.end_time=0.06").code == 0);
+  // The cost sums (run_cost.hpp) go through the checkpoint: after the resume they still begin at
+  // t = 0 (a resume that started them afresh would begin them at 0.03) and hold both invocations.
+  const auto both = lbdem::scenarios::read_run_cost(part + "/checkpoint.h5");
+  REQUIRE(first);
+  REQUIRE(both);
+  // Each ends where its checkpoint's state stands (0.03 and 0.06 s rounded to whole steps).
+  const double t_both = lbdem::H5In(part + "/checkpoint.h5").attr_double("time_s", "/dem");
+  CHECK(first->from_s == 0);
+  CHECK(first->to_s == Approx(0.03).margin(1e-4));
+  CHECK(both->from_s == 0);
+  CHECK(both->to_s == t_both);
+  CHECK(both->to_s == Approx(0.06).margin(1e-4));
+  CHECK(both->wall_s > first->wall_s);
   // Contacts exist in pairs_tally: the history really went through the checkpoint. The time series
   // continues without gaps or duplicates: same rows as the uninterrupted run.
   lbdem::test::check_same_runs(

@@ -1,9 +1,13 @@
 // The study tables' cost split (scenarios/common/study_case.hpp) on constructed run folders with
 // hand-computed answers: the phase table parser (the last table after an offset, names with
 // spaces and colons), the per-part wall seconds per simulated second from summed phases and from
-// the last invocation's shares, and the coarse-graining speed-up columns against their ideals.
+// the last invocation's shares, and the coarse-graining speed-up columns against their ideals; and
+// the cost sums a checkpoint carries from one invocation to the next (run_cost.hpp).
 #include <catch2/catch.hpp>
 
+#include "core/h5.hpp"
+#include "core/phase_timer.hpp"
+#include "scenarios/common/run_cost.hpp"
 #include "scenarios/common/study_case.hpp"
 
 #include <unistd.h>
@@ -118,9 +122,69 @@ TEST_CASE("Study costs: parts per simulated second, and speed-ups against their 
 
   // gas, DEM, coupling s/s; speed-up 4400 / 500 = 8.8; DEM 1600 / 100 = 16 against the ideal
   // 8000 / 1000 x 2 = 16; gas 2000 / 250 = 8 against 60000 / 60000 x 1.5 = 1.5; gas bounds it.
-  CHECK(speedup_columns(cg.string(), ref.string()) == "250,100,100,8.8,16,16,8,1.5,gas");
+  // The sums begin at t = 0 (a study_timing.txt of two numbers: from the run's start).
+  CHECK(speedup_columns(cg.string(), ref.string()) == "250,100,100,8.8,16,16,8,1.5,gas,0");
   // Without a reference the speed-ups are blank; a case without timing has nothing.
-  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas");
-  CHECK(speedup_columns((root / "none").string(), ref.string()) == ",,,,,,,,");
+  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas,0");
+  CHECK(speedup_columns((root / "none").string(), ref.string()) == ",,,,,,,,,");
+  // Sums from a checkpoint that begin later (run_cost.hpp: the first invocations left none).
+  write(cg / "study_timing.txt", "300 0.6 0.04\n");
+  CHECK(timed_from(cg.string()) == 0.04);
+  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas,0.04");
   fs::remove_all(root);
+}
+
+TEST_CASE("Study costs: the checkpoint's sums carry over, by phase name, or begin at an old one",
+          "[scenarios]") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("lbdem_test_run_cost_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string old_ck = (dir / "old.h5").string(), ck = (dir / "ck.h5").string(),
+                    next = (dir / "next.h5").string();
+  {  // A checkpoint of an lbdem that kept no sums.
+    lbdem::H5Out f(old_ck);
+    f.attr("format", std::string("lbdem-checkpoint-1"));
+    f.commit();
+  }
+  CHECK_FALSE(read_run_cost(old_ck));
+  // Resumed from it at t = 0.04: the sums begin there, with nothing before.
+  lbdem::PhaseTimer& timer = lbdem::PhaseTimer::global();
+  // One invocation: resumed from `from` at t0, its phases booked, saved into `to` at t1.
+  const auto invocation = [&](const std::string& from, double t0, const std::string& to, double t1,
+                              const auto& book) {
+    timer.reset();  // as run_scenario does
+    RunCostMeter m;
+    m.resume(lbdem::H5In(from), t0);
+    book();
+    lbdem::H5Out f(to);
+    m.save(f, t1);
+    f.commit();
+  };
+  invocation(old_ck, 0.04, ck, 0.05, [&] { timer.add(lbdem::Phase::dem_pair_contacts, 3.0); });
+  const auto c = read_run_cost(ck);
+  REQUIRE(c);
+  CHECK(c->from_s == 0.04);
+  CHECK(c->to_s == 0.05);
+  CHECK(c->wall_s >= 0);
+  // A later invocation adds its own seconds to the stored ones, phase by phase, and keeps where
+  // the sums began.
+  invocation(ck, 0.05, next, 0.06, [&] {
+    timer.add(lbdem::Phase::dem_pair_contacts, 2.0);
+    timer.add(lbdem::Phase::lbm_collide_stream, 7.0);
+  });
+  const auto d = read_run_cost(next);
+  REQUIRE(d);
+  CHECK(d->from_s == 0.04);
+  CHECK(d->to_s == 0.06);
+  CHECK(d->wall_s >= c->wall_s);
+  double contacts = -1, collide = -1;
+  for (const auto& [name, sec] : d->phases) {
+    if (name == "DEM: particle contacts") contacts = sec;
+    if (name == "gas: stream-collide") collide = sec;
+  }
+  CHECK(contacts == 5.0);  // 3 + 2: exact in binary
+  CHECK(collide == 7.0);
+  timer.reset();
+  fs::remove_all(dir);
 }

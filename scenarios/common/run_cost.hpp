@@ -1,0 +1,57 @@
+#pragma once
+// What a run cost, kept in its checkpoint so that the sums survive a run killed without warning
+// (issue 12 §2: wall time per simulated second of each coarse-graining case). Paper-scale cases
+// take longer than one session and are resumed from checkpoints; a session's end kills the
+// process, which then neither finishes its log nor returns to the study, so sums kept by the
+// caller lost every such invocation. Here the stepping loop's wall seconds and the phase timers'
+// seconds are summed over the invocations and written with each checkpoint (/timing): the steps
+// a killed invocation made after its last checkpoint are simulated again on resume, and so are
+// counted once, as in a run that never stopped.
+#include <array>
+#include <chrono>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/phase_timer.hpp"
+
+namespace lbdem {
+class H5In;
+class H5Out;
+}  // namespace lbdem
+
+namespace lbdem::scenarios {
+
+/// The sums a checkpoint holds.
+struct RunCost {
+  double from_s = 0;  // simulated time where the sums begin: 0, or a checkpoint written before
+                      // they were kept (an older lbdem)
+  double to_s = 0;    // the checkpoint's simulated time
+  double wall_s = 0;  // wall seconds of the stepping loops (set-up, banner and plots left out)
+  std::vector<std::pair<std::string, double>> phases;  // phase timer seconds, by phase_name()
+};
+
+/// The sums of the run in progress (DemDriver). The phase timers must have been reset when this
+/// invocation began (run_scenario does).
+class RunCostMeter {
+ public:
+  /// A new run, at simulated time t.
+  void begin(double t);
+  /// A resumed run, from the checkpoint `f` at simulated time t; a checkpoint without sums starts
+  /// them at t.
+  void resume(const H5In& f, double t);
+  /// Writes the sums up to now, the state being at simulated time t.
+  void save(H5Out& f, double t) const;
+
+ private:
+  using clock = std::chrono::steady_clock;
+  double from_s_ = 0, wall0_ = 0;
+  std::array<double, std::size_t(Phase::count)> phase0_{};
+  clock::time_point t0_{};
+};
+
+/// The sums in a checkpoint; nullopt if it has none or cannot be read.
+std::optional<RunCost> read_run_cost(const std::string& checkpoint);
+
+}  // namespace lbdem::scenarios
