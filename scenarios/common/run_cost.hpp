@@ -6,7 +6,11 @@
 // caller lost every such invocation. Here the stepping loop's wall seconds and the phase timers'
 // seconds are summed over the invocations and written with each checkpoint (/timing): the steps
 // a killed invocation made after its last checkpoint are simulated again on resume, and so are
-// counted once, as in a run that never stopped.
+// counted once, as in a run that never stopped. Not counted: set-up, banner and plots (outside the
+// loop), and the output time of the step that writes a checkpoint (booked after it is saved; at
+// a step's end that is the health check, row, snapshot and the checkpoint itself: seconds against
+// the hours of a paper-scale run). Phases stored under a name this lbdem does not know are dropped
+// (their seconds stay in the wall time).
 #include <array>
 #include <chrono>
 #include <optional>

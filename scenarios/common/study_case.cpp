@@ -69,8 +69,8 @@ std::pair<double, double> read_timing(const std::string& dir) {
 double timed_from(const std::string& dir) {
   std::ifstream in(dir + "/study_timing.txt");
   double wall = 0, simulated = 0, from = 0;
-  if (!(in >> wall >> simulated)) return std::nan("");
-  return (in >> from) ? from : 0.0;
+  if (!(in >> wall >> simulated >> from)) return std::nan("");
+  return from;
 }
 
 std::vector<std::pair<std::string, double>> read_phase_table(const std::string& log,
@@ -152,7 +152,7 @@ PartCosts part_costs(const std::string& dir) {
     sum += sec;
   }
   // Summed phases: each part's own seconds per simulated second; the rest is everything else of
-  // the wall time (set-up, the banner, plots: outside the timed span).
+  // the wall time (output, steering and, in sums the study kept, set-up, banner and plots).
   double scale = 1.0 / simulated;
   if (!(sum > 0)) {
     // No sums kept: the last invocation's shares of the summed wall time.
@@ -275,7 +275,10 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   if (rc != 0 && rc != 130) return rc;
   // Sums the run keeps in its checkpoint (run_cost.hpp) cover every invocation, a killed one up
   // to its last checkpoint; they replace the sums below, which miss the invocations that never
-  // returned here.
+  // returned here. They time the stepping loop only (the sums below also held set-up, banner and
+  // plots), and begin where the checkpoint's sums begin: a case timed here before, whose
+  // checkpoint has none, is from then on timed from its first resume by this lbdem (a third
+  // number in study_timing.txt; timed_from).
   if (const auto cost = read_run_cost(dir + "/checkpoint.h5")) {
     write_file_atomic(dir + "/study_timing.txt", full(cost->wall_s) + " " +
                                                      full(cost->to_s - cost->from_s) + " " +

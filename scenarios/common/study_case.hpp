@@ -31,8 +31,10 @@ void check_case_names(const std::vector<std::string>& wanted, const std::vector<
 double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
 std::pair<double, double> read_timing(const std::string& dir);
-/// The simulated time where those sums begin: 0 for a run timed from its start, later for one
-/// whose first invocations left no sums (killed before run_cost.hpp kept them); NaN: no timing.
+/// The simulated time where those sums begin, if they are the run's own (run_cost.hpp: the
+/// stepping loop's wall time, from the first checkpoint that kept sums; 0 for a run timed from its
+/// start); NaN if the study summed them (two numbers in study_timing.txt: whole invocations, set-up
+/// and plots included, the killed ones left out) or if there is no timing.
 double timed_from(const std::string& dir);
 
 /// The phase table a run writes at the end of its log.txt ("wall time by phase"), the last one at

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace lbdem::scenarios;
@@ -52,6 +53,17 @@ std::string table(double gas, double dem, double coupling, double output) {
     << "  output                              " << output << " s    0.2 %\n"
     << "  rest (set-up, steering, plots)      0 s    0.0 %\n";
   return s.str();
+}
+
+// study_phases.txt as a map from phase to seconds.
+std::map<std::string, double> read_phase_sums_for_test(const std::string& dir) {
+  std::map<std::string, double> out;
+  std::ifstream in(dir + "/study_phases.txt");
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t tab = line.find('\t');
+    if (tab != std::string::npos) out[line.substr(tab + 1)] = std::stod(line.substr(0, tab));
+  }
+  return out;
 }
 
 }  // namespace
@@ -122,12 +134,12 @@ TEST_CASE("Study costs: parts per simulated second, and speed-ups against their 
 
   // gas, DEM, coupling s/s; speed-up 4400 / 500 = 8.8; DEM 1600 / 100 = 16 against the ideal
   // 8000 / 1000 x 2 = 16; gas 2000 / 250 = 8 against 60000 / 60000 x 1.5 = 1.5; gas bounds it.
-  // The sums begin at t = 0 (a study_timing.txt of two numbers: from the run's start).
-  CHECK(speedup_columns(cg.string(), ref.string()) == "250,100,100,8.8,16,16,8,1.5,gas,0");
+  // Sums the study kept (two numbers in study_timing.txt) have no timed_from_s.
+  CHECK(speedup_columns(cg.string(), ref.string()) == "250,100,100,8.8,16,16,8,1.5,gas,");
   // Without a reference the speed-ups are blank; a case without timing has nothing.
-  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas,0");
+  CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas,");
   CHECK(speedup_columns((root / "none").string(), ref.string()) == ",,,,,,,,,");
-  // Sums from a checkpoint that begin later (run_cost.hpp: the first invocations left none).
+  // The run's own sums (run_cost.hpp), here from a checkpoint at 0.04 s on.
   write(cg / "study_timing.txt", "300 0.6 0.04\n");
   CHECK(timed_from(cg.string()) == 0.04);
   CHECK(speedup_columns(cg.string(), "") == "250,100,100,,,,,,gas,0.04");
@@ -167,24 +179,79 @@ TEST_CASE("Study costs: the checkpoint's sums carry over, by phase name, or begi
   CHECK(c->from_s == 0.04);
   CHECK(c->to_s == 0.05);
   CHECK(c->wall_s >= 0);
-  // A later invocation adds its own seconds to the stored ones, phase by phase, and keeps where
-  // the sums began.
+  for (const auto& [name, sec] : c->phases)
+    CHECK(sec == (name == "DEM: particle contacts" ? 3.0 : 0.0));
+  // A checkpoint whose sums a later lbdem wrote, by hand: its phases in another order, one of them
+  // unknown here, and a wall time far above anything this test spends (100 s).
+  {
+    lbdem::H5Out f(ck);
+    f.group("/timing");
+    f.write("/timing/phase_s", std::vector<double>{2.0, 5.0, 1.0});
+    f.attr("phases", std::string("output\na phase of a later lbdem\nDEM: particle contacts\n"),
+           "/timing");
+    f.attr("from_s", 0.01, "/timing");
+    f.attr("to_s", 0.05, "/timing");
+    f.attr("wall_s", 100.0, "/timing");
+    f.commit();
+  }
+  // The next invocation adds its own seconds to the stored ones, phase by phase and by name, and
+  // keeps where the sums began; the unknown phase is dropped (its seconds stay in the wall time).
   invocation(ck, 0.05, next, 0.06, [&] {
     timer.add(lbdem::Phase::dem_pair_contacts, 2.0);
     timer.add(lbdem::Phase::lbm_collide_stream, 7.0);
   });
   const auto d = read_run_cost(next);
   REQUIRE(d);
-  CHECK(d->from_s == 0.04);
+  CHECK(d->from_s == 0.01);
   CHECK(d->to_s == 0.06);
-  CHECK(d->wall_s >= c->wall_s);
-  double contacts = -1, collide = -1;
+  CHECK(d->wall_s >= 100.0);
+  CHECK(d->wall_s < 200.0);  // this invocation's own seconds: a few milliseconds
+  double contacts = -1, collide = -1, output = -1;
   for (const auto& [name, sec] : d->phases) {
+    CHECK(name != "a phase of a later lbdem");
     if (name == "DEM: particle contacts") contacts = sec;
     if (name == "gas: stream-collide") collide = sec;
+    if (name == "output") output = sec;
   }
-  CHECK(contacts == 5.0);  // 3 + 2: exact in binary
+  // Exact: sums of small integers in binary.
+  CHECK(contacts == 3.0);  // 1 stored + 2
   CHECK(collide == 7.0);
+  CHECK(output == 2.0);
   timer.reset();
   fs::remove_all(dir);
+}
+
+TEST_CASE("Study costs: a study case is timed from its run's checkpoint sums across a resume",
+          "[scenarios][checkpoint]") {
+  const fs::path root =
+      fs::temp_directory_path() / ("lbdem_test_study_case_cost_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  const std::string dir = (root / "box150").string();
+  // The small box of test_box_cli.cpp (150 particles, about a second per 0.03 s).
+  const StudyCase sc{
+      "box150",
+      "box",
+      std::string(LBDEM_SOURCE_DIR) + "/scenarios/box/presets/default.toml",
+      {"fill[0].count=150", "fill[0].lo=[0.0,0.0,0.0]", "fill[0].hi=[0.06,0.06,0.03]",
+       "output.checkpoint_interval=0.03", "run.end_time=0.03"}};
+  StudyOptions opt;
+  opt.threads = 1;
+  opt.no_plots = true;
+  REQUIRE(run_study_case(root.string(), sc, opt, "test") == 0);
+  const auto [wall1, sim1] = read_timing(dir);
+  CHECK(timed_from(dir) == 0);
+  CHECK(sim1 == Approx(0.03).margin(1e-4));  // 0.03 s on a whole step
+  CHECK(wall1 > 0);
+  const auto phases1 = read_phase_sums_for_test(dir);
+  // Extended to 0.06 s: resumed, and timed from the start over both invocations.
+  opt.end_time = 0.06;
+  REQUIRE(run_study_case(root.string(), sc, opt, "test") == 0);
+  const auto [wall2, sim2] = read_timing(dir);
+  CHECK(timed_from(dir) == 0);
+  CHECK(sim2 == Approx(0.06).margin(1e-4));
+  CHECK(wall2 > wall1);
+  const auto phases2 = read_phase_sums_for_test(dir);
+  REQUIRE(phases1.count("DEM: particle contacts"));
+  CHECK(phases2.at("DEM: particle contacts") > phases1.at("DEM: particle contacts"));
+  fs::remove_all(root);
 }
