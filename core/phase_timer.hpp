@@ -1,13 +1,15 @@
 #pragma once
 // Where a run's wall time goes (issue 12 §1): one process-wide table of seconds per phase of the
 // solvers' steps, which the solvers book with laps (after LAMMPS's Timer, which its styles share),
-// and the run command prints at the end of log.txt. A lap reads the steady clock once per phase
-// boundary (a few tens of ns, against microseconds and more per phase); switched off
+// and the run command prints at the end of log.txt. A lap reads the run clock (run_clock.hpp) once
+// per phase boundary (a few tens of ns, against microseconds and more per phase); switched off
 // (run.phase_timers = false) it only tests a flag. Laps are taken outside OpenMP regions, by the
 // thread that steps the solvers.
 #include <array>
 #include <chrono>
 #include <string>
+
+#include "core/run_clock.hpp"
 
 namespace lbdem {
 
@@ -59,7 +61,7 @@ class PhaseLap {
   }
 
  private:
-  using clock = std::chrono::steady_clock;
+  using clock = RunClock;  // suspensions (SIGTSTP) left out
   bool on_;
   clock::time_point last_{};
 };

@@ -1,9 +1,11 @@
 #pragma once
 #include <chrono>
 
+#include "core/run_clock.hpp"
+
 namespace lbdem {
 
-/// Wall-clock stopwatch.
+/// Wall-clock stopwatch; time suspended by SIGTSTP is left out (run_clock.hpp).
 class Stopwatch {
  public:
   Stopwatch() : start_(clock::now()) {}
@@ -11,7 +13,7 @@ class Stopwatch {
   double seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
 
  private:
-  using clock = std::chrono::steady_clock;
+  using clock = RunClock;
   clock::time_point start_;
 };
 

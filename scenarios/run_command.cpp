@@ -12,6 +12,7 @@
 
 #include "core/config.hpp"
 #include "core/phase_timer.hpp"
+#include "core/run_clock.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/log.hpp"
@@ -79,8 +80,14 @@ void make_plots(const std::string& dir, Log& log) {
   if (std::system(cmd.c_str()) != 0) log.line("warning: the plotting tools failed (" + cmd + ")");
 }
 
+// The time this invocation stood suspended (run_clock.hpp), if any.
+void log_suspension(Log& log, double suspended_before) {
+  if (const double held = suspended_seconds() - suspended_before; held > 0)
+    log.line("suspended (SIGTSTP) for " + to_text(held) + " s, left out of the wall times");
+}
+
 // The phase table at the end of log.txt, for a finished or a stopped run alike.
-void log_phase_times(Log& log, std::chrono::steady_clock::duration elapsed) {
+void log_phase_times(Log& log, RunClock::duration elapsed) {
   if (!PhaseTimer::global().enabled()) return;
   std::string table = PhaseTimer::global().table(std::chrono::duration<double>(elapsed).count());
   table.pop_back();  // the last line's newline: Log::line adds one
@@ -127,6 +134,9 @@ int run_scenario(const RunOptions& opt) {
     for (const auto& s : scenarios()) std::cout << s.name << "  " << s.description << "\n";
     return 0;
   }
+  // Suspending a run (kill -TSTP) to free the cores stops its clocks too (run_clock.hpp).
+  install_suspend_handler();
+  const double suspended0 = suspended_seconds();
   const bool resume = !opt.resume.empty();
   std::string name = opt.scenario;
   if (resume && !fs::exists(opt.resume + "/checkpoint.h5"))
@@ -192,23 +202,25 @@ int run_scenario(const RunOptions& opt) {
     // A damaged checkpoint fails the run below with its own message; the timing can wait.
   }
   PhaseTimer::global().reset();
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = RunClock::now();
   int rc = 0;
   try {
     rc = scenario->run(ctx);
   } catch (const Interrupted& e) {
     write_file_atomic(dir + "/status", "stopped (resume with ./lbdem run --resume " + dir + ")\n");
     log.line(std::string(e.what()) + "; resume with ./lbdem run --resume " + dir);
-    log_phase_times(log, std::chrono::steady_clock::now() - t0);
+    log_phase_times(log, RunClock::now() - t0);
+    log_suspension(log, suspended0);
     return 130;
   } catch (...) {
     write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
     throw;
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = std::chrono::duration<double>(RunClock::now() - t0).count();
   log.line("wall time " + to_text(wall) + " s; wall time per simulated second " +
            to_text(wall / std::max(1e-300, scenario->output().end_time - t_start)) + " s/s");
-  log_phase_times(log, std::chrono::steady_clock::now() - t0);
+  log_suspension(log, suspended0);
+  log_phase_times(log, RunClock::now() - t0);
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
   std::cout << "run folder: " << fs::absolute(dir).string() << "\n"

@@ -35,15 +35,13 @@ void RunCostMeter::begin(double t) {
 
 void RunCostMeter::resume(const H5In& f, double t) {
   begin(t);
-  if (!f.has("/timing") || !f.has("/timing/phase_s")) return;
-  const auto names = split_lines(f.attr_string("phases", "/timing"));
-  const auto sec = f.doubles("/timing/phase_s");
-  if (names.size() != sec.size()) return;
-  from_s_ = f.attr_double("from_s", "/timing");
-  wall0_ = f.attr_double("wall_s", "/timing");
-  for (std::size_t k = 0; k < names.size(); ++k)
+  const std::optional<RunCost> c = read_run_cost(f);
+  if (!c) return;
+  from_s_ = c->from_s;
+  wall0_ = c->wall_s;
+  for (const auto& [name, sec] : c->phases)
     for (std::size_t p = 0; p < kPhases; ++p)
-      if (names[k] == phase_name(Phase(p))) phase0_[p] = sec[k];
+      if (name == phase_name(Phase(p))) phase0_[p] = sec;
 }
 
 void RunCostMeter::save(H5Out& f, double t) const {
@@ -58,19 +56,22 @@ void RunCostMeter::save(H5Out& f, double t) const {
   f.attr("wall_s", wall0_ + std::chrono::duration<double>(clock::now() - t0_).count(), "/timing");
 }
 
+std::optional<RunCost> read_run_cost(const H5In& f) {
+  if (!f.has("/timing") || !f.has("/timing/phase_s")) return std::nullopt;
+  RunCost c;
+  c.from_s = f.attr_double("from_s", "/timing");
+  c.to_s = f.attr_double("to_s", "/timing");
+  c.wall_s = f.attr_double("wall_s", "/timing");
+  const auto names = split_lines(f.attr_string("phases", "/timing"));
+  const auto sec = f.doubles("/timing/phase_s");
+  if (names.size() != sec.size()) return std::nullopt;
+  for (std::size_t k = 0; k < names.size(); ++k) c.phases.emplace_back(names[k], sec[k]);
+  return c;
+}
+
 std::optional<RunCost> read_run_cost(const std::string& checkpoint) {
   try {
-    const H5In f(checkpoint);
-    if (!f.has("/timing") || !f.has("/timing/phase_s")) return std::nullopt;
-    RunCost c;
-    c.from_s = f.attr_double("from_s", "/timing");
-    c.to_s = f.attr_double("to_s", "/timing");
-    c.wall_s = f.attr_double("wall_s", "/timing");
-    const auto names = split_lines(f.attr_string("phases", "/timing"));
-    const auto sec = f.doubles("/timing/phase_s");
-    if (names.size() != sec.size()) return std::nullopt;
-    for (std::size_t k = 0; k < names.size(); ++k) c.phases.emplace_back(names[k], sec[k]);
-    return c;
+    return read_run_cost(H5In(checkpoint));
   } catch (const std::exception&) {
     return std::nullopt;
   }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/phase_timer.hpp"
+#include "core/run_clock.hpp"
 
 namespace lbdem {
 class H5In;
@@ -49,13 +50,16 @@ class RunCostMeter {
   void save(H5Out& f, double t) const;
 
  private:
-  using clock = std::chrono::steady_clock;
+  using clock = RunClock;  // suspensions (SIGTSTP) left out
   double from_s_ = 0, wall0_ = 0;
   std::array<double, std::size_t(Phase::count)> phase0_{};
   clock::time_point t0_{};
 };
 
-/// The sums in a checkpoint; nullopt if it has none or cannot be read.
+/// The sums in an open checkpoint; nullopt if it has none (or their names and seconds disagree);
+/// throws (H5 error) if /timing lacks one of its attributes.
+std::optional<RunCost> read_run_cost(const H5In& f);
+/// The same from a checkpoint's path; nullopt also if the file cannot be read.
 std::optional<RunCost> read_run_cost(const std::string& checkpoint);
 
 }  // namespace lbdem::scenarios

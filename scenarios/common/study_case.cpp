@@ -13,6 +13,7 @@
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
+#include "core/run_clock.hpp"
 #include "scenarios/common/run_cost.hpp"
 #include "scenarios/run_command.hpp"
 
@@ -109,9 +110,6 @@ std::vector<std::pair<std::string, double>> read_phase_table(const std::string& 
   return table;
 }
 
-namespace {
-
-// study_phases.txt: "seconds<TAB>phase" per line; a malformed line is skipped.
 std::vector<std::pair<std::string, double>> read_phase_sums(const std::string& dir) {
   std::vector<std::pair<std::string, double>> out;
   std::ifstream in(dir + "/study_phases.txt");
@@ -125,6 +123,8 @@ std::vector<std::pair<std::string, double>> read_phase_sums(const std::string& d
   }
   return out;
 }
+
+namespace {
 
 // Groups of the phase timers (core/phase_timer.cpp names them "gas: ...", "DEM: ...",
 // "coupling: ...").
@@ -268,9 +268,9 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   std::streamoff log_before = 0;
   if (!ro.resume.empty() && fs::exists(dir + "/log.txt"))
     log_before = std::streamoff(fs::file_size(dir + "/log.txt"));
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = RunClock::now();
   const int rc = run_scenario(ro);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = std::chrono::duration<double>(RunClock::now() - t0).count();
   // A stopped run (130: a signal, checkpoint written) still adds its wall time to the case's.
   if (rc != 0 && rc != 130) return rc;
   // Sums the run keeps in its checkpoint (run_cost.hpp) cover every invocation, a killed one up

@@ -31,6 +31,9 @@ void check_case_names(const std::vector<std::string>& wanted, const std::vector<
 double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).
 std::pair<double, double> read_timing(const std::string& dir);
+/// Summed phase seconds of a case (study_phases.txt, "seconds<TAB>phase" per line): (phase,
+/// seconds) in the file's order; a malformed line is skipped; empty if absent.
+std::vector<std::pair<std::string, double>> read_phase_sums(const std::string& dir);
 /// The simulated time where those sums begin, if they are the run's own (run_cost.hpp: the
 /// stepping loop's wall time, from the first checkpoint that kept sums; 0 for a run timed from its
 /// start); NaN if the study summed them (two numbers in study_timing.txt: whole invocations, set-up

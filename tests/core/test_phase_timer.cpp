@@ -1,6 +1,7 @@
 // The phase timers (core/phase_timer.hpp): laps book the time between them to their phase, the
 // table's shares add up to the wall time given, and switched off nothing is booked. Against a
-// steady-clock stopwatch around the same laps.
+// stopwatch around the same laps (both read the run clock, the steady clock when nothing is
+// suspended).
 #include <catch2/catch.hpp>
 
 #include <chrono>

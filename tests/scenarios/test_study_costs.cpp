@@ -56,13 +56,9 @@ std::string table(double gas, double dem, double coupling, double output) {
 }
 
 // study_phases.txt as a map from phase to seconds.
-std::map<std::string, double> read_phase_sums_for_test(const std::string& dir) {
+std::map<std::string, double> phase_sums(const std::string& dir) {
   std::map<std::string, double> out;
-  std::ifstream in(dir + "/study_phases.txt");
-  for (std::string line; std::getline(in, line);) {
-    const std::size_t tab = line.find('\t');
-    if (tab != std::string::npos) out[line.substr(tab + 1)] = std::stod(line.substr(0, tab));
-  }
+  for (const auto& [name, sec] : read_phase_sums(dir)) out[name] = sec;
   return out;
 }
 
@@ -242,7 +238,7 @@ TEST_CASE("Study costs: a study case is timed from its run's checkpoint sums acr
   CHECK(timed_from(dir) == 0);
   CHECK(sim1 == Approx(0.03).margin(1e-4));  // 0.03 s on a whole step
   CHECK(wall1 > 0);
-  const auto phases1 = read_phase_sums_for_test(dir);
+  const auto phases1 = phase_sums(dir);
   // Extended to 0.06 s: resumed, and timed from the start over both invocations.
   opt.end_time = 0.06;
   REQUIRE(run_study_case(root.string(), sc, opt, "test") == 0);
@@ -250,7 +246,7 @@ TEST_CASE("Study costs: a study case is timed from its run's checkpoint sums acr
   CHECK(timed_from(dir) == 0);
   CHECK(sim2 == Approx(0.06).margin(1e-4));
   CHECK(wall2 > wall1);
-  const auto phases2 = read_phase_sums_for_test(dir);
+  const auto phases2 = phase_sums(dir);
   REQUIRE(phases1.count("DEM: particle contacts"));
   CHECK(phases2.at("DEM: particle contacts") > phases1.at("DEM: particle contacts"));
   fs::remove_all(root);
