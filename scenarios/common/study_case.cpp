@@ -46,6 +46,22 @@ void check_case_names(const std::vector<std::string>& wanted, const std::vector<
                        "did you mean '" + nearest(want, known) + "'? (./lbdem study --list)");
 }
 
+std::vector<std::size_t> cases_to_run(const std::vector<std::string>& wanted,
+                                      const std::vector<std::string>& known,
+                                      const std::vector<bool>& by_default) {
+  std::vector<std::size_t> out;
+  if (wanted.empty()) {
+    for (std::size_t k = 0; k < known.size(); ++k)
+      if (by_default[k]) out.push_back(k);
+    return out;
+  }
+  for (const auto& w : wanted) {
+    const auto k = std::size_t(std::find(known.begin(), known.end(), w) - known.begin());
+    if (k < known.size() && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+  }
+  return out;
+}
+
 double last_time(const std::string& csv) {
   std::ifstream f(csv);
   std::string line, last;

@@ -27,6 +27,14 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
 void check_case_names(const std::vector<std::string>& wanted, const std::vector<std::string>& known,
                       const std::string& study);
 
+/// The cases an invocation runs, as indices into `known`: those --cases names, in the order given
+/// (a name given twice runs once), so that a user decides which case runs first; without
+/// --cases, those for which `by_default` holds, in the study's order. Names must have passed
+/// check_case_names.
+std::vector<std::size_t> cases_to_run(const std::vector<std::string>& wanted,
+                                      const std::vector<std::string>& known,
+                                      const std::vector<bool>& by_default);
+
 /// The last time_s of a run's timeseries.csv, 0 if none.
 double last_time(const std::string& csv);
 /// Summed wall and simulated seconds of a case (study_timing.txt; zeros if absent).

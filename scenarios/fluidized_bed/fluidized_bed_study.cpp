@@ -96,10 +96,8 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   std::vector<std::string> names;
   for (const auto& c : cases()) names.push_back(c.name);
   check_case_names(opt.cases, names, "fluidized_bed");
-  for (const auto& c : cases())
-    if (opt.cases.empty() ||
-        std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())
-      todo.push_back(&c);
+  for (const std::size_t k : cases_to_run(opt.cases, names, std::vector<bool>(names.size(), true)))
+    todo.push_back(&cases()[k]);
   const std::string root = opt.out.empty() ? "studies/fluidized_bed" : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;

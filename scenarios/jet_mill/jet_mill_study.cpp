@@ -137,11 +137,6 @@ int run_jet_mill_study(const StudyOptions& opt) {
   if (opt.quick && opt.end_time > 0)
     throw InputError("--end-time", fmt(opt.end_time), "--quick sets its own end time",
                      "give --quick or --end-time, not both");
-  const auto wanted = [&](const Case& c) {
-    return opt.cases.empty()
-               ? c.in_default
-               : std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end();
-  };
   const std::string root =
       opt.out.empty() ? (opt.quick ? "studies/jet_mill_quick" : "studies/jet_mill") : opt.out;
   fs::create_directories(root);
@@ -157,8 +152,10 @@ int run_jet_mill_study(const StudyOptions& opt) {
                         {"fluid.dx=1e-3", "output.interval=1e-4", "output.snapshot_interval=5e-4",
                          "output.checkpoint_interval=0.01"});
   }
-  for (const auto& c : cases()) {
-    if (!wanted(c)) continue;
+  std::vector<bool> by_default;
+  for (const auto& c : cases()) by_default.push_back(c.in_default);
+  for (const std::size_t k : cases_to_run(opt.cases, names, by_default)) {
+    const Case& c = cases()[k];
     const std::string run = c.same_as ? c.same_as : c.name;
     const StudyCase sc{run, "jet_mill", src + "/scenarios/jet_mill/presets/" + run + ".toml", {}};
     if (const int rc = run_study_case(root, sc, run_opt, "jet_mill study"); rc != 0) return rc;
