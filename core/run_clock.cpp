@@ -21,8 +21,8 @@ std::atomic_flag g_writer = ATOMIC_FLAG_INIT;  // two handlers on two threads ta
 static_assert(std::atomic<std::int64_t>::is_always_lock_free, "used from a signal handler");
 static_assert(std::atomic<std::uint64_t>::is_always_lock_free, "used from a signal handler");
 
-// clock_gettime is async-signal-safe (POSIX.1-2008 §2.4.3); CLOCK_MONOTONIC is libstdc++'s
-// steady_clock on Linux, so the total is in the same time base as the clock it corrects.
+// clock_gettime is async-signal-safe (POSIX.1-2008 §2.4.3), so the handler and RunClock::now()
+// read the same clock, CLOCK_MONOTONIC (libstdc++'s steady_clock on Linux).
 std::int64_t monotonic_ns() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
