@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
+#include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "scenarios/common/study_case.hpp"
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
@@ -55,6 +57,15 @@ const std::vector<Case>& cases() {
 
 // The study's figures average over its 0.07-0.1 s; --quick over the last 2 ms of its 4 ms.
 constexpr double kFrom = 0.07, kTo = 0.1, kQuickEnd = 0.004, kQuickFrom = 0.002;
+
+}  // namespace
+
+FigureWindow figure_window(double spin_up, bool quick, double row_interval) {
+  return {spin_up + (quick ? kQuickFrom : kFrom),
+          spin_up + (quick ? kQuickEnd : kTo) + 0.5 * row_interval};
+}
+
+namespace {
 
 std::string fmt(double v, const char* f = "%.4g") {
   if (!std::isfinite(v)) return "";
@@ -169,29 +180,35 @@ int run_jet_mill_study(const StudyOptions& opt) {
   }
 
   // Every case of the folder that has reached the window's end (with the feed at the presets'
-  // time, which sets the window); the figures' window in run time.
-  const double from = spin_up + (opt.quick ? kQuickFrom : kFrom);
-  const double to = spin_up + (opt.quick ? kQuickEnd : kTo);
+  // time, which sets the window).
+  const double end = figure_window(spin_up, opt.quick, 0).to;
   std::vector<const Case*> present;
+  double row_interval = std::numeric_limits<double>::infinity();
   for (const auto& c : cases()) {
     const std::string dir = root + "/" + c.name;
     if (!fs::exists(dir + "/config.toml")) continue;
     const double reached = last_time(dir + "/timeseries.csv");
-    const double start =
-        Config::from_file(dir + "/config.toml").section("inflow").get("start", spin_up);
+    const Config cfg = Config::from_file(dir + "/config.toml");
+    const double start = cfg.section("inflow").get("start", spin_up);
     if (start != spin_up)
       std::cerr << "jet_mill study: " << c.name << " feeds from " << start << " s, not " << spin_up
                 << " s: left out (the window is the same for all cases)\n";
-    else if (reached < to - 1e-9)
+    else if (reached < end - 1e-9)
       std::cerr << "jet_mill study: " << c.name << " has reached " << reached
-                << " s, not yet the window's end (" << to << " s): left out of the figures\n";
-    else
+                << " s, not yet the window's end (" << end << " s): left out of the figures\n";
+    else {
       present.push_back(&c);
+      row_interval = std::min(
+          row_interval, OutputSettings::from(cfg.section("run"), cfg.section("output")).interval);
+    }
   }
   if (present.empty()) {
-    std::cerr << "jet_mill study: no case has reached the window (" << from << " s of run time)\n";
+    std::cerr << "jet_mill study: no case has reached the window's end (" << end
+              << " s of run time)\n";
     return 0;
   }
+  // The figures' window in run time, its end padded to take each run's last row.
+  const auto [from, to] = figure_window(spin_up, opt.quick, row_interval);
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   // Outputs of an earlier invocation must not stand in for a tool that fails now.
   for (const char* f : {"collisions.csv", "collisions_impact_speed.csv", "collisions_table.txt",
@@ -322,7 +339,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
     rate_prev = rate_pp, n_prev = c->n, series_prev = ref;
     const double span = get(cr, "t_to_s") - get(cr, "t_from_s");
     table << c->name << "," << c->n << "," << fmt(std::cbrt(double(c->n))) << ","
-          << fmt(parcels, "%.0f") << "," << fmt(from - spin_up) << "," << fmt(to - spin_up) << ","
+          << fmt(parcels, "%.0f") << "," << fmt(from - spin_up) << "," << fmt(end - spin_up) << ","
           << fmt(last_time(dir + "/timeseries.csv") - spin_up) << "," << fmt(get(kr, "mean")) << ","
           << fmt(get(kr, "stderr_mean")) << ","
           << fmt(maps.empty() ? std::nan("") : number(maps.front(), "mean_speed_m_per_s")) << ","

@@ -206,7 +206,9 @@ int main(int argc, char** argv) {
   Options o;
   app.add_option("RUN_DIR", o.dirs, "run folders, e.g. a CG series")->required();
   app.add_option("--from", o.from, "window start [s] (default: first row)");
-  app.add_option("--to", o.to, "window end [s] (default: last row)");
+  app.add_option("--to", o.to,
+                 "window end [s], inclusive (default: last row; a run writes its last row up to "
+                 "an exchange cycle past its end time, so a window ending there needs a pad)");
   app.add_option("--csv", o.csv, "write the table to this CSV and OUT_impact_speed.csv");
   app.add_option("--label", o.labels, "label per run, in order (default: \"l = <size_factor>\")")
       ->allow_extra_args(false);

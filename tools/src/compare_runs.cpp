@@ -166,7 +166,9 @@ int main(int argc, char** argv) {
   app.add_option("RUN_DIR", o.dirs, "run folders, e.g. CG 1, 1.6 and 2")->required();
   app.add_option("--column", o.column, "timeseries column")->capture_default_str();
   app.add_option("--from", o.from, "window start [s] (default: first row)");
-  app.add_option("--to", o.to, "window end [s] (default: last row)");
+  app.add_option("--to", o.to,
+                 "window end [s], inclusive (default: last row; a run writes its last row up to "
+                 "an exchange cycle past its end time, so a window ending there needs a pad)");
   app.add_option("--out", o.out, "prefix of the output CSVs (default: print only)");
   app.add_option("--label", o.labels, "label per run, in order (default: \"l = <size_factor>\")")
       ->allow_extra_args(false);

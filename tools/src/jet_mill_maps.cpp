@@ -98,7 +98,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> jets;
     app.add_option("run_dir", dir, "run folder")->required();
     app.add_option("--from", from, "window start [s]");
-    app.add_option("--to", to, "window end [s]");
+    app.add_option("--to", to,
+                   "window end [s], inclusive (a run writes its last snapshot up to an exchange "
+                   "cycle past its end time, so a window ending there needs a pad)");
     app.add_option("--out", prefix, "output prefix (PREFIX_speed_map.csv, ...)")->required();
     app.add_option("--bin", bin, "x-y bin width of the speed map and radial bin of the gas [m]");
     app.add_option("--wall-bin", wall_bin, "bin width of the wall-distance profile [m]");
