@@ -180,8 +180,9 @@ int run_jet_mill_study(const StudyOptions& opt) {
   }
 
   // Every case of the folder that has reached the window's end (with the feed at the presets'
-  // time, which sets the window).
-  const double end = figure_window(spin_up, opt.quick, 0).to;
+  // time, which sets the window): its last row at most half a row interval short of it (the run
+  // rounds its last step to the nearest whole step, then up to a whole exchange cycle).
+  const double end = spin_up + (opt.quick ? kQuickEnd : kTo);
   std::vector<const Case*> present;
   double row_interval = std::numeric_limits<double>::infinity();
   for (const auto& c : cases()) {
@@ -190,16 +191,17 @@ int run_jet_mill_study(const StudyOptions& opt) {
     const double reached = last_time(dir + "/timeseries.csv");
     const Config cfg = Config::from_file(dir + "/config.toml");
     const double start = cfg.section("inflow").get("start", spin_up);
+    const double interval =
+        OutputSettings::from(cfg.section("run"), cfg.section("output")).interval;
     if (start != spin_up)
       std::cerr << "jet_mill study: " << c.name << " feeds from " << start << " s, not " << spin_up
                 << " s: left out (the window is the same for all cases)\n";
-    else if (reached < end - 1e-9)
+    else if (reached < end - 0.5 * interval)
       std::cerr << "jet_mill study: " << c.name << " has reached " << reached
                 << " s, not yet the window's end (" << end << " s): left out of the figures\n";
     else {
       present.push_back(&c);
-      row_interval = std::min(
-          row_interval, OutputSettings::from(cfg.section("run"), cfg.section("output")).interval);
+      row_interval = std::min(row_interval, interval);
     }
   }
   if (present.empty()) {
@@ -207,7 +209,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
               << " s of run time)\n";
     return 0;
   }
-  // The figures' window in run time, its end padded to take each run's last row.
+  // The window the tools select rows and snapshots in, its end padded to take each run's last
+  // row (the figure script only labels its plots with the window, so it gets the unpadded end).
   const auto [from, to] = figure_window(spin_up, opt.quick, row_interval);
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   // Outputs of an earlier invocation must not stand in for a tool that fails now.
@@ -254,7 +257,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
   if (!opt.no_plots && !python.empty()) {
     std::string plot = quoted(python) + " " + quoted(src + "/tools/jet_mill_figures.py") + " " +
                        quoted(root) + " --from " + fmt(from, "%.17g") + " --to " +
-                       fmt(to, "%.17g") + " --offset " + fmt(spin_up, "%.17g") + " --radius " +
+                       fmt(end, "%.17g") + " --offset " + fmt(spin_up, "%.17g") + " --radius " +
                        fmt(chamber_radius, "%.17g");
     for (const Case* c : present) plot += " " + c->name;
     if (system_ok(plot + " > /dev/null", "tools/jet_mill_figures.py") == 0)
