@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/thread_ranges.hpp"
 #include "dem/dem_solver.hpp"
 
 namespace lbdem::dem {
@@ -119,21 +120,17 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   if (pl.state[k] & kInteracting) f_i += c.force, t_i += ai * tc + c.m_roll;
 }
 
-/// Pairs are taken row by row (all pairs with the same i in one thread, in ascending j), so the
-/// forces on i are summed right here in a fixed order; the particle pass gathers only the j side.
+/// The pair pass over rows [i0, i1), in a function of its own (core/thread_ranges.hpp: why).
 template <class Table>
-void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr,
-                   const DemSettings& s, PairList& pl, double time, RowSums& sums) {
-  const std::size_t n = p.size();
+[[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+                                 const DemSettings& s, PairList& pl, double time, RowSums& sums,
+                                 std::size_t i0, std::size_t i1) {
   const double range = tab.range;
   const Domain& dom = s.domain;
   const bool per = dom.any_periodic();
-  sums.f.resize(n);
-  sums.t.resize(n);
   // The distance test stays in the loop: most listed pairs are in the skin only, and the kernel's
   // large frame is set up just for those that interact.
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = i0; i < i1; ++i) {
     Vec3 f = Vec3::Zero(), t = Vec3::Zero();
     for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
       const std::uint32_t j = pl.j[k];
@@ -147,6 +144,18 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& p
     sums.f[i] = f;
     sums.t[i] = t;
   }
+}
+
+/// Pairs are taken row by row (all pairs with the same i in one thread, in ascending j), so the
+/// forces on i are summed right here in a fixed order; the particle pass gathers only the j side.
+template <class Table>
+void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+                   const DemSettings& s, PairList& pl, double time, RowSums& sums) {
+  const std::size_t n = p.size();
+  sums.f.resize(n);
+  sums.t.resize(n);
+  for_thread_ranges(
+      n, [&](std::size_t i0, std::size_t i1) { pair_rows(tab, p, pr, s, pl, time, sums, i0, i1); });
 }
 
 /// Contact of particle k with wall entry e, given where the wall is seen from the centre.
@@ -257,12 +266,22 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
 }
 
 template <class Table>
+[[gnu::noinline]] void particle_range(const Table& tab, ParticleArrays& p, const Predicted& pr,
+                                      const RowSums& sums, const DemSettings& s,
+                                      const std::vector<Wall>& walls, const PairList& pl,
+                                      WallContactList& wc, double time, std::size_t k0,
+                                      std::size_t k1) {
+  for (std::size_t k = k0; k < k1; ++k)
+    particle_kernel(tab, p, pr, sums, s, walls, pl, wc, time, k);
+}
+
+template <class Table>
 void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr,
                        const RowSums& sums, const DemSettings& s, const std::vector<Wall>& walls,
                        const PairList& pl, WallContactList& wc, double time) {
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < n; ++k) particle_kernel(tab, p, pr, sums, s, walls, pl, wc, time, k);
+  for_thread_ranges(p.size(), [&](std::size_t k0, std::size_t k1) {
+    particle_range(tab, p, pr, sums, s, walls, pl, wc, time, k0, k1);
+  });
 }
 
 }  // namespace lbdem::dem
