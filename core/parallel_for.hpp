@@ -1,7 +1,8 @@
 #pragma once
 // A parallel loop whose body may throw. An exception may not leave an OpenMP region (the runtime
 // calls std::terminate), so each iteration's is caught, and after the loop the one of the lowest
-// index is rethrown: the same error, with the same message, for any thread count.
+// index is rethrown: the same error, with the same message, for any thread count. For many small
+// items that each call a large out-of-line kernel, see core/thread_ranges.hpp instead.
 #include <cstddef>
 #include <exception>
 #include <limits>

@@ -120,9 +120,10 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   if (pl.state[k] & kInteracting) f_i += c.force, t_i += ai * tc + c.m_roll;
 }
 
-/// The pair pass over rows [i0, i1), in a function of its own (core/thread_ranges.hpp: why).
+/// The pair pass over rows [i0, i1), in a function of its own (core/thread_ranges.hpp: why; pr
+/// by value for the same reason: the caller's copy sits on the master thread's stack).
 template <class Table>
-[[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+[[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted pr,
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  std::size_t i0, std::size_t i1) {
   const double range = tab.range;
@@ -265,8 +266,9 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
   p.omega[k] += (h / p.inertia[k]) * tq;
 }
 
+/// The particle pass over [k0, k1), as pair_rows.
 template <class Table>
-[[gnu::noinline]] void particle_range(const Table& tab, ParticleArrays& p, const Predicted& pr,
+[[gnu::noinline]] void particle_range(const Table& tab, ParticleArrays& p, const Predicted pr,
                                       const RowSums& sums, const DemSettings& s,
                                       const std::vector<Wall>& walls, const PairList& pl,
                                       WallContactList& wc, double time, std::size_t k0,
