@@ -11,12 +11,12 @@ using namespace lbdem::dem;
 using Law = ContactLaw<HertzMindlin, NoRolling, NoCohesion>;
 
 struct Soa {
-  std::vector<double> nx, ny, nz, delta, rs, ms, vx, vy, vz, hx, hy, hz;  // geometry
+  std::vector<double> nx, ny, nz, delta, rs, ms, vx, vy, vz, hx, hy, hz;    // geometry
   std::vector<double> xx, xy, xz, kt;                                       // history
-  std::vector<double> fx, fy, fz, tx, ty, tz, pnd, ptd, esl, est, uel, fn;   // outputs
+  std::vector<double> fx, fy, fz, tx, ty, tz, pnd, ptd, esl, est, uel, fn;  // outputs
   void resize(size_t n) {
-    for (auto* v : {&nx, &ny, &nz, &delta, &rs, &ms, &vx, &vy, &vz, &hx, &hy, &hz, &xx, &xy, &xz, &kt,
-                    &fx, &fy, &fz, &tx, &ty, &tz, &pnd, &ptd, &esl, &est, &uel, &fn})
+    for (auto* v : {&nx, &ny, &nz, &delta, &rs, &ms, &vx, &vy, &vz,  &hx,  &hy,  &hz,  &xx,  &xy,
+                    &xz, &kt, &fx, &fy,    &fz, &tx, &ty, &tz, &pnd, &ptd, &esl, &est, &uel, &fn})
       v->resize(n);
   }
 };
@@ -25,8 +25,10 @@ struct Soa {
   const double E = p.normal.e_star, G = p.normal.g_star, cd = p.normal.c_damp,
                tr = p.normal.t_ratio, mu = p.friction;
   const bool td = p.tangential_damping;
-  double* __restrict xx = s.xx.data(); double* __restrict xy = s.xy.data();
-  double* __restrict xz = s.xz.data(); double* __restrict kt = s.kt.data();
+  double* __restrict xx = s.xx.data();
+  double* __restrict xy = s.xy.data();
+  double* __restrict xz = s.xz.data();
+  double* __restrict kt = s.kt.data();
 #pragma omp simd
   for (size_t k = 0; k < n; ++k) {
     const double nx = s.nx[k], ny = s.ny[k], nz = s.nz[k], d = s.delta[k];
@@ -42,10 +44,14 @@ struct Soa {
     const double t0 = x0 - sn * nx, t1 = x1 - sn * ny, t2v = x2v - sn * nz;
     const double t2 = t0 * t0 + t1 * t1 + t2v * t2v;
     const double sc = (x2 > 0 && t2 > 0) ? std::sqrt(x2 / t2) : 0.0;
-    x0 = x2 > 0 ? t0 * sc : x0; x1 = x2 > 0 ? t1 * sc : x1; x2v = x2 > 0 ? t2v * sc : x2v;
+    x0 = x2 > 0 ? t0 * sc : x0;
+    x1 = x2 > 0 ? t1 * sc : x1;
+    x2v = x2 > 0 ? t2v * sc : x2v;
     const double s0 = x0, s1 = x1, s2 = x2v, kto = kt[k];
     const double hn = s.hx[k] * nx + s.hy[k] * ny + s.hz[k] * nz;
-    x0 += (s.hx[k] - hn * nx) * dt; x1 += (s.hy[k] - hn * ny) * dt; x2v += (s.hz[k] - hn * nz) * dt;
+    x0 += (s.hx[k] - hn * nx) * dt;
+    x1 += (s.hy[k] - hn * ny) * dt;
+    x2v += (s.hz[k] - hn * nz) * dt;
     const double gt = td ? gam * tr : 0.0;
     const double cap = mu * std::max(fn, 0.0);
     const double f0 = -ktn * x0, f1 = -ktn * x1, f2 = -ktn * x2v;
@@ -55,8 +61,9 @@ struct Soa {
     // sliding branch
     const double sf0 = f0 * r, sf1 = f1 * r, sf2 = f2 * r;
     const double nx0 = -sf0 / ktn, nx1 = -sf1 / ktn, nx2 = -sf2 / ktn;
-    const double esl = 0.5 * ((kto * s0 + ktn * nx0) * (x0 - nx0) + (kto * s1 + ktn * nx1) * (x1 - nx1) +
-                              (kto * s2 + ktn * nx2) * (x2v - nx2));
+    const double esl =
+        0.5 * ((kto * s0 + ktn * nx0) * (x0 - nx0) + (kto * s1 + ktn * nx1) * (x1 - nx1) +
+               (kto * s2 + ktn * nx2) * (x2v - nx2));
     // sticking branch
     double d0 = f0 - gt * vtx, d1 = f1 - gt * vty, d2 = f2 - gt * vtz;
     const double dd = d0 * d0 + d1 * d1 + d2 * d2;
@@ -77,9 +84,10 @@ struct Soa {
   }
 }
 
-[[gnu::noinline, gnu::flatten]] void scalar(const Law::Params& p, const std::vector<ContactGeometry>& g,
-                                            std::vector<ContactHistory>& h, std::vector<ContactForce>& out,
-                                            double dt) {
+[[gnu::noinline, gnu::flatten]] void scalar(const Law::Params& p,
+                                            const std::vector<ContactGeometry>& g,
+                                            std::vector<ContactHistory>& h,
+                                            std::vector<ContactForce>& out, double dt) {
   for (size_t k = 0; k < g.size(); ++k) out[k] = Law::evaluate(p, g[k], h[k], dt);
 }
 
@@ -87,35 +95,49 @@ int main() {
   const size_t n = std::getenv("N") ? std::atoi(std::getenv("N")) : 50000;
   const int reps = 20000000 / n;
   MaterialPair m{};
-  m.e_star = 5e6 / (2 * (1 - 0.09)); m.g_star = m.e_star * 0.4; m.restitution = 0.5;
+  m.e_star = 5e6 / (2 * (1 - 0.09));
+  m.g_star = m.e_star * 0.4;
+  m.restitution = 0.5;
   Law::Params p{HertzMindlin::from(m), 0.5, true, {}, {}};
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<ContactGeometry> g(n);
   std::vector<ContactHistory> h(n);
   std::vector<ContactForce> out(n);
-  Soa s; s.resize(n);
+  Soa s;
+  s.resize(n);
   for (size_t k = 0; k < n; ++k) {
-    Vec3 nn(u(rng), u(rng), u(rng)); nn.normalize();
-    g[k].n = nn; g[k].delta = 1e-6 * (1 + u(rng)); g[k].r_star = 2.5e-4; g[k].m_star = 2.6e-7;
-    g[k].v_rel = Vec3(u(rng), u(rng), u(rng)) * 1e-3; g[k].v_half = g[k].v_rel;
-    h[k].xi = Vec3(u(rng), u(rng), u(rng)) * 1e-8; h[k].kt = 1e3;
-    s.nx[k] = nn[0], s.ny[k] = nn[1], s.nz[k] = nn[2], s.delta[k] = g[k].delta, s.rs[k] = 2.5e-4, s.ms[k] = 2.6e-7;
+    Vec3 nn(u(rng), u(rng), u(rng));
+    nn.normalize();
+    g[k].n = nn;
+    g[k].delta = 1e-6 * (1 + u(rng));
+    g[k].r_star = 2.5e-4;
+    g[k].m_star = 2.6e-7;
+    g[k].v_rel = Vec3(u(rng), u(rng), u(rng)) * 1e-3;
+    g[k].v_half = g[k].v_rel;
+    h[k].xi = Vec3(u(rng), u(rng), u(rng)) * 1e-8;
+    h[k].kt = 1e3;
+    s.nx[k] = nn[0], s.ny[k] = nn[1], s.nz[k] = nn[2], s.delta[k] = g[k].delta, s.rs[k] = 2.5e-4,
+    s.ms[k] = 2.6e-7;
     s.vx[k] = g[k].v_rel[0], s.vy[k] = g[k].v_rel[1], s.vz[k] = g[k].v_rel[2];
     s.hx[k] = s.vx[k], s.hy[k] = s.vy[k], s.hz[k] = s.vz[k];
     s.xx[k] = h[k].xi[0], s.xy[k] = h[k].xi[1], s.xz[k] = h[k].xi[2], s.kt[k] = 1e3;
   }
   // one evaluation each, compared
-  auto h0 = h; auto s0 = s;
-  scalar(p, g, h, out, 1e-6); lanes(p, s, n, 1e-6);
-  double md = 0; int nsl = 0;
+  auto h0 = h;
+  auto s0 = s;
+  scalar(p, g, h, out, 1e-6);
+  lanes(p, s, n, 1e-6);
+  double md = 0;
+  int nsl = 0;
   for (size_t k = 0; k < n; ++k) {
     md = std::max(md, std::abs(out[k].force[0] - s.fx[k]) / (std::abs(out[k].fn) + 1e-30));
     nsl += out[k].e_sliding > 0;
   }
   std::printf("max |dFx|/Fn = %.3g, sliding %d of %zu\n", md, nsl, n);
   for (int pass = 0; pass < 3; ++pass) {
-    h = h0; s = s0;
+    h = h0;
+    s = s0;
     auto t0 = std::chrono::steady_clock::now();
     for (int r = 0; r < reps; ++r) scalar(p, g, h, out, 1e-6);
     auto t1 = std::chrono::steady_clock::now();
