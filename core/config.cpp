@@ -157,7 +157,7 @@ void Config::set_override(std::string_view assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0)
     throw InputError("--set", std::string(assignment), "expected key.path=value",
-                     "write for example --set dem.end_time=0.5");
+                     "write for example --set run.end_time=0.5");
   std::string key(assignment.substr(0, eq));
   std::string value(assignment.substr(eq + 1));
   key.erase(0, key.find_first_not_of(' '));

@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace lbdem {
 
@@ -31,6 +32,13 @@ inline std::string to_text(double v, int digits = 6) {
   os.precision(digits);
   os << v;
   return os.str();
+}
+
+/// Renders a list of numbers as TOML writes it: [a, b, c].
+inline std::string list_text(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + to_text(v[i]);
+  return s + "]";
 }
 
 /// Exit code for every input error (DESIGN §3).

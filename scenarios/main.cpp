@@ -17,8 +17,7 @@ int main(int argc, char** argv) {
                   "TOML config file (default: the scenario's default preset)");
   run->add_option("--set", opt.sets, "override a key: --set key.path=value (repeatable)");
   run->add_option("--out", opt.out, "run folder (default: runs/<scenario>-<date>-<time>)");
-  run->add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+  run->add_option("--threads", opt.threads, "OpenMP threads (default: all cores)");
   run->add_option("--resume", opt.resume, "continue the run in RUN_DIR from its checkpoint.h5");
   run->add_flag("--list", opt.list, "list the scenarios");
   run->add_flag("--no-plots", opt.no_plots, "skip the PNG plots");
@@ -32,8 +31,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   study->add_option("--set", so.sets, "override a key in every new case (repeatable)");
   study->add_option("--out", so.out, "study folder (default: studies/<name>)");
-  study->add_option("--threads", so.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+  study->add_option("--threads", so.threads, "OpenMP threads (default: all cores)");
   study->add_flag("--no-plots", so.no_plots, "skip the PNG plots");
   study->add_flag("--list", so.list, "list the studies");
   study->add_flag("--no-run", so.no_run,
@@ -56,6 +54,11 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : lbdem::kInputErrorExit;
   }
   try {
+    // Checked here rather than by CLI11, whose range message is two lines without a fix.
+    const int threads = *study ? so.threads : opt.threads;
+    if ((*study ? study : run)->count("--threads") && threads < 1)
+      throw lbdem::InputError("--threads", std::to_string(threads), "must be at least 1",
+                              "give a thread count >= 1, or leave --threads out to use all cores");
     if (*study) return run_study(so);
     return run_scenario(opt);
   } catch (const lbdem::InputError& e) {

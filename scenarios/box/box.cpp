@@ -111,11 +111,11 @@ BoxScenario::BoxScenario(const Config& cfg) {
     dem::FillRequest req;
     req.lo = f.get_vec3("lo", s.domain.lo);
     req.hi = f.get_vec3("hi", s.domain.hi);
-    if (!inside(req.lo, 0, s.domain.lo, s.domain.hi) ||
-        !inside(req.hi, 0, s.domain.lo, s.domain.hi))
-      throw InputError(f.path("lo"), vec_text(req.lo) + " - " + vec_text(req.hi),
-                       "fill region outside the box",
-                       "keep the fill region inside box.lo - box.hi");
+    for (const auto& [key, corner] : {std::pair{"lo", req.lo}, std::pair{"hi", req.hi}})
+      if (!inside(corner, 0, s.domain.lo, s.domain.hi))
+        throw InputError(f.path(key), vec_text(corner), "fill region corner outside the box",
+                         "keep the fill region inside box.lo = " + vec_text(s.domain.lo) +
+                             " - box.hi = " + vec_text(s.domain.hi));
     req.count = f.get_int("count", 0, Range::non_negative());
     req.mass = f.get("mass", 0.0, Range::non_negative());
     if ((req.count > 0) == (req.mass > 0))

@@ -115,12 +115,20 @@ StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
   // resumes with the same step instead of scaling it a second time.
   c.dt = d.get("dt", tc / per / dt_factor, Range::positive("give the time step in s")) * dt_factor;
   const bool force = d.get_bool("force_dt", false);
-  if (c.dt > tc / 20 && !force)
+  // The message speaks in dem.dt's own terms (the originals' step): with coarse graining the
+  // parcels step dt_factor times that, so the limit the user must meet is t_c/20 / dt_factor.
+  if (c.dt > tc / 20 && !force) {
+    const std::string scaled = dt_factor != 1 ? " (the parcels step " + to_text(dt_factor) +
+                                                    " x dem.dt = " + to_text(c.dt) + " s)"
+                                              : "";
     throw InputError(
-        d.path("dt"), to_text(c.dt),
-        "above t_c/20 = " + to_text(tc / 20) + " s (contact time t_c = " + to_text(tc) + " s for " +
-            c.scales.where + " at " + to_text(c.impact_speed) + " m/s)",
-        "lower dem.dt, or set dem.force_dt = true to accept fewer than 20 steps per contact");
+        d.path("dt"), to_text(c.dt / dt_factor),
+        "above t_c/20" + std::string(dt_factor != 1 ? " / " + to_text(dt_factor) : "") + " = " +
+            to_text(tc / 20 / dt_factor) + " s" + scaled + " (contact time t_c = " + to_text(tc) +
+            " s for " + c.scales.where + " at " + to_text(c.impact_speed) + " m/s)",
+        "lower dem.dt to at most " + to_text(tc / 20 / dt_factor) +
+            " s, or set dem.force_dt = true to accept fewer than 20 steps per contact");
+  }
   return c;
 }
 

@@ -32,8 +32,7 @@ FluidizedBedScenario::FluidizedBedScenario(const Config& cfg) : box_(cfg) {
   const std::vector<double> taps = bed.get_list("pressure_taps", def);
   if (taps.size() != 2 || !(taps[0] < taps[1]) || taps[0] < z_lo || taps[1] > z_hi)
     throw InputError(
-        bed.path("pressure_taps"), "[" + to_text(taps.empty() ? 0 : taps[0]) + ", ...]",
-        "two heights inside the column, lower first",
+        bed.path("pressure_taps"), list_text(taps), "two heights inside the column, lower first",
         "give [z_low, z_high] in m within [" + to_text(z_lo) + ", " + to_text(z_hi) + "]");
   taps_ = {taps[0], taps[1]};
   const auto mats = cfg.table_array("materials");

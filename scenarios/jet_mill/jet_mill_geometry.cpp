@@ -100,6 +100,18 @@ void check_source_fits(const Config& n, const Nozzle& q, const JetMillGeometry& 
                        const FluidConfig& f, const Config& section) {
   const double rs = q.source_radius, clear = 1.5 * f.dx;
   const double z = q.exit.z() - g.axis.z();
+  if (2 * (rs + clear) > g.height)  // no height fits: the source is too wide for the chamber
+    throw InputError(n.has("supply_pressure") ? n.path("supply_pressure") : n.path("speed"),
+                     n.has("supply_pressure") ? to_text(q.supply_pressure) : to_text(q.speed),
+                     std::string(q.feed ? "the feed's" : "the jets'") +
+                         " notional source (radius " + to_text(rs) +
+                         " m, the momentum flux spread at " +
+                         to_text(std::sqrt(q.momentum_flux() / (kPi * f.density * rs * rs))) +
+                         " m/s) does not fit the chamber height " + to_text(g.height) +
+                         " m with 1.5 cells to floor and roof",
+                     "lower the speed, pressure or diameter, or raise fluid.max_speed (now " +
+                         to_text(f.max_speed) +
+                         " m/s; it sets the gas step) so that the source may be narrower");
   if (z < rs + clear || z > g.height - rs - clear)
     throw InputError(
         n.path("height"), to_text(z),
