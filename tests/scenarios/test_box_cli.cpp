@@ -40,7 +40,8 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
       {"dem.dt=1e-3", "dem.dt"},                           // unstable time step
       {"contact.normal=\"herz\"", "contact.normal"},       // unknown law
       {"particle=[{position=[1.0,0.0,0.0],radius=1e-3}]",
-       "particle[0].position"},  // outside the box
+       "particle[0].position"},                      // outside the box
+      {"fill[0].hi=[0.06,0.06,0.5]", "fill[0].hi"},  // the corner that is out, not lo
   };
   for (const auto& c : cases) {
     const std::string out = tmpdir("bad");
@@ -52,6 +53,11 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // one line
     CHECK_FALSE(fs::exists(out));
   }
+  // A thread count below 1: lbdem's one line, not CLI11's two without a fix.
+  const auto t0 = cli("run box --threads 0 --out " + tmpdir("bad"));
+  CHECK(t0.code == 2);
+  CHECK(t0.err.find("'--threads' = 0") != std::string::npos);
+  CHECK(std::count(t0.err.begin(), t0.err.end(), '\n') == 1);
   // The nearest known key is suggested for a misspelt one.
   CHECK(cli("run box --set dem.dtt=1e-6").err.find("did you mean 'dem.dt'") != std::string::npos);
 }
