@@ -335,9 +335,7 @@ std::vector<double> Config::get_list(std::string_view key, const std::vector<dou
 Vec3 Config::get_vec3(std::string_view key, const Vec3& def) const {
   const auto v = get_list(key, {def.x(), def.y(), def.z()});
   if (v.size() != 3) {
-    std::string text = "[";
-    for (std::size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + to_text(v[i]);
-    throw InputError(path(key), text + "]", "expected three numbers [x, y, z]",
+    throw InputError(path(key), list_text(v), "expected three numbers [x, y, z]",
                      "write [x, y, z] in SI units");
   }
   return {v[0], v[1], v[2]};

@@ -105,9 +105,7 @@ void check_source_fits(const Config& n, const Nozzle& q, const JetMillGeometry& 
                      n.has("supply_pressure") ? to_text(q.supply_pressure) : to_text(q.speed),
                      std::string(q.feed ? "the feed's" : "the jets'") +
                          " notional source (radius " + to_text(rs) +
-                         " m, the momentum flux spread at " +
-                         to_text(std::sqrt(q.momentum_flux() / (kPi * f.density * rs * rs))) +
-                         " m/s) does not fit the chamber height " + to_text(g.height) +
+                         " m) does not fit the chamber height " + to_text(g.height) +
                          " m with 1.5 cells to floor and roof",
                      "lower the speed, pressure or diameter, or raise fluid.max_speed (now " +
                          to_text(f.max_speed) +

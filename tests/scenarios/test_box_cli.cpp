@@ -54,8 +54,10 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
     CHECK_FALSE(fs::exists(out));
   }
   // A thread count below 1: lbdem's one line, not CLI11's two without a fix.
-  const auto t0 = cli("run box --threads 0 --out " + tmpdir("bad"));
+  const std::string t0_out = tmpdir("bad");
+  const auto t0 = cli("run box --threads 0 --out " + t0_out);
   CHECK(t0.code == 2);
+  CHECK_FALSE(fs::exists(t0_out));
   CHECK(t0.err.find("'--threads' = 0") != std::string::npos);
   CHECK(std::count(t0.err.begin(), t0.err.end(), '\n') == 1);
   // The nearest known key is suggested for a misspelt one.
