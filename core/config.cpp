@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -60,7 +61,24 @@ toml::table* parent_table(toml::table& root, const std::vector<std::string>& par
   return node ? node->as_table() : nullptr;
 }
 
+// The shortest text that reads back as v: 0.1 stays 0.1 (toml++ prints 17 digits), and a value
+// just past a limit does not print as the limit (1.0000001 against "<= 1" would read "1" at 6
+// digits).
+std::string shortest(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// A value as the user wrote it: numbers as shortest() gives them, strings quoted, arrays element
+// by element.
 std::string describe(const toml::node& n) {
+  if (const auto* a = n.as_array()) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) s += (i ? ", " : "") + describe(*a->get(i));
+    return s + "]";
+  }
+  if (const auto* d = n.as_floating_point()) return shortest(d->get());
   std::ostringstream os;
   n.visit([&](auto&& v) {
     if constexpr (toml::is_string<decltype(v)>) {
@@ -171,9 +189,23 @@ void Config::set_override(std::string_view assignment) {
   const auto parts = split_path(key);
   for (toml::table* root : {&s_->input, &s_->resolved}) {
     toml::table* parent = parent_table(*root, parts);
+    if (!parent) {
+      // A part of the path that holds a value, not a table (a face given as "wall" and then
+      // --set on one of its fields): name it, and what to set instead.
+      std::string at;
+      const toml::node* node = root;
+      for (std::size_t i = 0; i + 1 < parts.size() && node && node->is_table(); ++i) {
+        at += (at.empty() || parts[i].front() == '[' ? "" : ".") + parts[i];
+        node = node->as_table()->get(parts[i]);
+      }
+      if (node && !node->is_table() && !node->is_array())
+        throw InputError(at, describe(*node),
+                         "is a value, not a table, so " + key + " has no place",
+                         "set " + at + " itself, e.g. --set '" + at + "={...}' with the fields");
+    }
     if (!parent || parts.back().front() == '[')
       throw InputError("--set", std::string(assignment), "cannot place this key in the config",
-                       "name a key inside a table, e.g. --set particles.count=1000");
+                       "name a key inside a table, e.g. --set run.end_time=0.5");
     parent->insert_or_assign(parts.back(), *parsed.get("v"));
   }
 }
@@ -225,7 +257,7 @@ void Config::check_range(std::string_view key, double v, const Range& r) const {
     if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
     if (std::isfinite(r.hi))
       want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
-    throw InputError(path(key), to_text(v), "must be " + (want.empty() ? "finite" : want),
+    throw InputError(path(key), shortest(v), "must be " + (want.empty() ? "finite" : want),
                      r.fix.empty() ? "give a value in that range" : std::string(r.fix));
   }
 }
@@ -351,13 +383,57 @@ void Config::check_unknown_keys() const {
   std::vector<std::string> unknown;
   collect_unknown(s_->input, "", s_->known, unknown);
   if (unknown.empty()) return;
-  std::vector<std::string> known;
-  for (const auto& k : s_->known) known.push_back(strip_indices(k));
+  std::set<std::string> known;
+  for (const auto& k : s_->known) known.insert(strip_indices(k));
   const std::string& u = unknown.front();
-  const std::string hint = nearest(strip_indices(u), known);
   const toml::node* n = s_->input.at_path(u).node();
   throw InputError(u, n ? describe(*n) : "", "unknown key",
-                   hint.empty() ? "remove it" : "did you mean '" + hint + "'? (or remove it)");
+                   unknown_key_fix(strip_indices(u), known));
+}
+
+std::string unknown_key_fix(const std::string& key, const std::set<std::string>& known) {
+  const auto dot = key.rfind('.');
+  const std::string table = dot == std::string::npos ? "" : key.substr(0, dot);
+  const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
+  const auto table_of = [](const std::string& k) {
+    const auto d = k.rfind('.');
+    return d == std::string::npos ? std::string() : k.substr(0, d);
+  };
+  const auto leaf_of = [](const std::string& k) {
+    const auto d = k.rfind('.');
+    return d == std::string::npos ? k : k.substr(d + 1);
+  };
+  // A misspelling stays within its table: the nearest key there, if it is near (a third of the
+  // name, at least 2 edits). Else the same name in another table (a key written in the wrong
+  // one). Else nothing is near: the closest of a few hundred paths, whatever table it is in,
+  // misleads more than it helps, so list the table's keys instead.
+  std::vector<std::string> siblings, leaves;
+  for (const auto& k : known)
+    if (table_of(k) == table) siblings.push_back(k), leaves.push_back(leaf_of(k));
+  const std::size_t near = std::max<std::size_t>(2, leaf.size() / 3);
+  if (!leaves.empty()) {
+    const std::string best = nearest(leaf, leaves);
+    if (edit_distance(leaf, best) <= near)
+      return "did you mean '" + (table.empty() ? best : table + "." + best) + "'? (or remove it)";
+  }
+  std::vector<std::string> same_leaf;
+  for (const auto& k : known)
+    if (leaf_of(k) == leaf) same_leaf.push_back(k);
+  if (!same_leaf.empty()) return "did you mean '" + nearest(key, same_leaf) + "'? (or remove it)";
+  if (siblings.empty()) {
+    // A misspelt table: the nearest path, if it is near as a whole.
+    const std::vector<std::string> all(known.begin(), known.end());
+    const std::string best = nearest(key, all);
+    if (!best.empty() && edit_distance(key, best) <= std::max<std::size_t>(2, key.size() / 4))
+      return "did you mean '" + best + "'? (or remove it)";
+    return "remove it";
+  }
+  std::string list;
+  const std::size_t shown = std::min<std::size_t>(siblings.size(), 8);
+  for (std::size_t i = 0; i < shown; ++i) list += (i ? ", " : "") + leaves[i];
+  if (siblings.size() > shown) list += ", ...";
+  return "remove it (the keys read from " +
+         (table.empty() ? std::string("the top level") : "[" + table + "]") + " are " + list + ")";
 }
 
 std::string Config::resolved_toml() const {

@@ -139,6 +139,9 @@ int run_scenario(const RunOptions& opt) {
   const double suspended0 = suspended_seconds();
   const bool resume = !opt.resume.empty();
   std::string name = opt.scenario;
+  if (resume && !fs::is_directory(opt.resume))
+    throw InputError("--resume", opt.resume, "no such folder",
+                     "give the run folder of the run to continue (its --out)");
   if (resume && !fs::exists(opt.resume + "/checkpoint.h5"))
     throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder",
                      "give a run folder that has one");

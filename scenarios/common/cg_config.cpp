@@ -8,11 +8,10 @@ CoarseGrain read_coarse_grain(const Config& c, const std::string& normal_law) {
   cg::CgInput in;
   in.rule = c.get_string("rule", in.rule);
   in.cohesion = c.get_string("cohesion", in.cohesion);
-  if (c.has("size_factor"))
-    in.size_factor = c.get("size_factor", 1.0, Range::positive("give l >= 1, e.g. 2"));
-  if (c.has("particles_per_parcel"))
-    in.particles_per_parcel =
-        c.get("particles_per_parcel", 1.0, Range::positive("give n >= 1, e.g. 8"));
+  // The range (>= 1) is cg::validate's, with the reason; a "> 0" range here would fire first on
+  // a negative value and contradict its own fix.
+  if (c.has("size_factor")) in.size_factor = c.get("size_factor", 1.0);
+  if (c.has("particles_per_parcel")) in.particles_per_parcel = c.get("particles_per_parcel", 1.0);
   CoarseGrain out;
   out.settings = cg::validate(in, "coarse_grain");
   out.scale_dt = c.get_bool("scale_dt", true);

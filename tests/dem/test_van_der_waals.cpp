@@ -18,8 +18,8 @@ TEST_CASE("van der Waals force follows A R*/(6 h^2), clamped at h_min and cut at
     CHECK(dem::VanDerWaals::eval(p, -h, r_star).f ==
           Approx(1e-19 * r_star / (6 * h * h)).epsilon(1e-12));
   CHECK(dem::VanDerWaals::eval(p, 1e-6, r_star).f ==
-        Approx(1e-19 * r_star / (6 * 16e-20)));              // in contact: h = h_min
-  CHECK(dem::VanDerWaals::eval(p, -2e-5, r_star).f == 0.0);  // beyond h_max
+        Approx(1e-19 * r_star / (6 * 16e-20)).epsilon(1e-12));  // in contact: h = h_min
+  CHECK(dem::VanDerWaals::eval(p, -2e-5, r_star).f == 0.0);     // beyond h_max
 }
 
 TEST_CASE("van der Waals pull between two particles in the solver", "[dem][physics][cohesion]") {

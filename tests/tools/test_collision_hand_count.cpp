@@ -19,10 +19,11 @@ using lbdem::test::tmpdir;
 
 // Beads of r = 1 mm, rho = 2500 kg/m^3 (m = 1.0472e-5 kg), linear spring k = 10 N/m (contact
 // time about 2.3 ms for the pair's reduced mass m/2, 3.2 ms against the floor), e = 0.5, no
-// friction, no gravity, in a closed 10 mm box. A and B approach at 0.1 m/s each across a 2 mm gap
-// and touch at 10 ms; C falls at 0.1 m/s onto the floor from 1 mm and touches at 10 ms. By 50 ms
-// A and B (0.05 m/s each after the collision) are more than 1 mm from the x walls, C 5 mm from
-// the top.
+// friction, no gravity, in a closed 10 mm box; a step of 50 us (t_c/45 and t_c/64), so that the
+// time-series rows, every 5 ms, fall on whole steps (100). A and B approach at 0.1 m/s each across
+// a 2 mm gap and touch at 10 ms; C falls at 0.1 m/s onto the floor from 1 mm and touches at 10 ms.
+// By 50 ms A and B (0.05 m/s each after the collision) are more than 1 mm from the x walls, C 5 mm
+// from the top.
 const char* kCase = R"(scenario = "box"
 [run]
 end_time = 0.05
@@ -40,6 +41,8 @@ restitution = 0.5
 friction = 0.0
 [contact]
 normal = "linear"
+[dem]
+dt = 5e-5
 [[particle]]
 position = [0.003, 0.005, 0.005]
 velocity = [0.1, 0.0, 0.0]
@@ -79,27 +82,30 @@ TEST_CASE("collision-stats counts and dissipation equal hand counts on a constru
   const std::string tool =
       (std::filesystem::path(LBDEM_CLI).parent_path() / "lbdem-collision-stats").string();
   const std::string csv = dir + "_coll.csv";
+  // The window 0 - 47.5 ms ends half-way between two rows, so the rows it holds are those at 0,
+  // 5, ..., 45 ms whatever their times round to.
   REQUIRE(std::system(
-              (tool + " " + dir + " --from 0 --to 0.05 --csv " + csv + " > /dev/null").c_str()) ==
+              (tool + " " + dir + " --from 0 --to 0.0475 --csv " + csv + " > /dev/null").c_str()) ==
           0);
   const auto r = first_row(csv);
   const auto num = [&](const char* k) { return std::stod(r.at(k)); };
   CHECK(num("collisions_pp") == 1);
   CHECK(num("collisions_pw") == 1);
-  // Per parcel over the window among 3 parcels: 2 x 1 / (3 T) particle-particle (two parcels take
-  // part in each) and 1 / (3 T) particle-wall, T the span between the window's first and last
-  // time-series rows (rows fall on DEM steps, about 0.05 s apart here); l = 1, so per original the
-  // same. Both contacts (10 - 13 ms) lie inside it. The CSV holds 9 digits: 1e-8.
-  const double T = num("t_to_s") - num("t_from_s");
-  REQUIRE(num("t_from_s") < 0.01);
-  REQUIRE(num("t_to_s") > 0.014);
+  // The tool's span is that of the window's first and last time-series rows: 0 and 45 ms (900
+  // steps of 50 us; the CSV holds 9 digits).
+  CHECK(num("t_from_s") == 0);
+  CHECK(num("t_to_s") == Approx(0.045).epsilon(1e-8));
+  // Per parcel over T = 45 ms among 3 parcels: 2 x 1 / (3 T) particle-particle (two parcels take
+  // part in each) and 1 / (3 T) particle-wall; l = 1, so per original the same. Both contacts
+  // (10 - 13 ms) lie inside the window. 1e-8: the CSV's 9 digits.
+  const double T = 0.045;
   CHECK(num("freq_pp_per_parcel_per_s") == Approx(2.0 / (3 * T)).epsilon(1e-8));
   CHECK(num("freq_pw_per_parcel_per_s") == Approx(1.0 / (3 * T)).epsilon(1e-8));
   CHECK(num("freq_pp_per_original_per_s") == Approx(2.0 / (3 * T)).epsilon(1e-8));
   // Dissipated: (1 - e^2) of the kinetic energy of the relative motion, 1/2 (m/2) (0.2 m/s)^2 for
   // the pair and 1/2 m (0.1 m/s)^2 against the (infinitely heavy) floor: 7.854e-8 + 3.927e-8 J,
   // all by normal damping. The linear spring-dashpot's restitution is exact for the continuous
-  // contact; the velocity-Verlet step (t_c/50 or shorter) leaves an error of order (dt/t_c)^2 in
+  // contact; the velocity-Verlet step (t_c/45 or shorter) leaves an error of order (dt/t_c)^2 in
   // the rebound speed: 1 % covers it with room.
   const double m = 2500 * 4.0 / 3.0 * M_PI * 1e-9;
   const double pair = 0.75 * 0.5 * (m / 2) * 0.04, wall = 0.75 * 0.5 * m * 0.01;
