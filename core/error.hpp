@@ -41,6 +41,12 @@ inline std::string list_text(const std::vector<double>& v) {
   return s + "]";
 }
 
+/// A 3-vector (anything indexable by 0-2) as list_text writes it: [x, y, z].
+template <class V>
+std::string vec_text(const V& v) {
+  return list_text({double(v[0]), double(v[1]), double(v[2])});
+}
+
 /// Exit code for every input error (DESIGN §3).
 inline constexpr int kInputErrorExit = 2;
 

@@ -18,10 +18,6 @@ bool inside(const Vec3& x, double r, const Vec3& lo, const Vec3& hi) {
   return true;
 }
 
-std::string vec_text(const Vec3& v) {
-  return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
-}
-
 }  // namespace
 
 BoxScenario::BoxScenario(const Config& cfg) {

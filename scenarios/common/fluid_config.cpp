@@ -12,10 +12,6 @@ namespace {
 const char* kAxes[3] = {"x", "y", "z"};
 const std::vector<std::string> kFaceKinds = {"wall", "periodic", "moving_wall", "inlet", "outlet"};
 
-std::string vec_text(const Vec3& v) {
-  return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
-}
-
 // One face: a plain string, or an inline table with a kind.
 FluidFace read_face(const Config& faces, int f, bool periodic_default) {
   const std::string name(lbm::BoxFaces::kNames[std::size_t(f)]);

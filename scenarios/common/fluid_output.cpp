@@ -180,12 +180,9 @@ std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const Flu
   if (!bad) return std::nullopt;
   const lbm::LatticeUnits u = c.units();
   const Vec3 x = c.cell_centre(bad->x, bad->y, bad->z);
-  const auto vec = [](const Vec3& v) {
-    return "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]";
-  };
   return "gas diverged at t = " + to_text(time) + " s (DEM step " + std::to_string(dem_step) +
          ", gas step " + std::to_string(s.steps()) + "): cell (" + std::to_string(bad->x) + ", " +
-         std::to_string(bad->y) + ", " + std::to_string(bad->z) + ") at " + vec(x) +
+         std::to_string(bad->y) + ", " + std::to_string(bad->z) + ") at " + vec_text(x) +
          " m has rho/rho_ref = " + to_text(bad->rho) + " and speed " +
          to_text(u.velocity_to_si(bad->speed)) + " m/s (healthy: " + to_text(1 - kHealthyDensity) +
          " - " + to_text(1 + kHealthyDensity) + ", below " +

@@ -112,8 +112,7 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
     if ((!g.meshed() && std::hypot(c.x() - g.axis.x(), c.y() - g.axis.y()) > g.radius) ||
         c.z() < g.axis.z() || c.z() > g.axis.z() + g.height)
       throw InputError(
-          inflow.path(c == hi ? "hi" : "lo"),
-          to_text(c.x()) + ", " + to_text(c.y()) + ", " + to_text(c.z()),
+          inflow.path(c == hi ? "hi" : "lo"), vec_text(c),
           "a corner of the feed region lies outside the chamber",
           g.meshed() ? "keep inflow.lo - inflow.hi between the floor and the top plate (0 - " +
                            to_text(g.height) + " m above box.lo)"
@@ -132,8 +131,7 @@ void JetMillScenario::add_chamber_walls(const Config& cfg) {
     const double r_in = g.classifier_radius - 0.5 * g.classifier_thickness;
     const double r_out = g.classifier_radius + 0.5 * g.classifier_thickness;
     if (r_max >= r_in && r_min <= r_out && hi.z() >= g.axis.z() + g.height - g.classifier_height)
-      throw InputError(inflow.path("lo"),
-                       to_text(lo.x()) + ", " + to_text(lo.y()) + ", " + to_text(lo.z()),
+      throw InputError(inflow.path("lo"), vec_text(lo),
                        "the feed region reaches into the classifier ring (radii " + to_text(r_in) +
                            " - " + to_text(r_out) + " m)",
                        "move inflow.lo - inflow.hi inside or outside the ring, or below it");
@@ -198,9 +196,7 @@ void JetMillScenario::check_feed_in_gas(const Config& cfg) const {
   // insertion keeps spheres inside the region) and the region's centre is in a gas cell.
   const Config inflow = cfg.section("inflow");
   const Vec3 lo = inflow.require_vec3("lo"), hi = inflow.require_vec3("hi");
-  const std::string where = "lo " + to_text(lo.x()) + ", " + to_text(lo.y()) + ", " +
-                            to_text(lo.z()) + "; hi " + to_text(hi.x()) + ", " + to_text(hi.y()) +
-                            ", " + to_text(hi.z());
+  const std::string where = "lo " + vec_text(lo) + "; hi " + vec_text(hi);
   for (const Triangle& t : geometry_.side_facets())
     if (triangle_meets_box(t, lo, hi))
       throw InputError(inflow.path("lo"), where,
