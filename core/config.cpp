@@ -200,8 +200,10 @@ void Config::set_override(std::string_view assignment) {
       }
       if (node && !node->is_table() && !node->is_array())
         throw InputError(at, describe(*node),
-                         "is a value, not a table, so " + key + " has no place",
-                         "set " + at + " itself, e.g. --set '" + at + "={...}' with the fields");
+                         "holds a value, not a table, so " + key + " has no place",
+                         "set " + at + " itself (--set " + at +
+                             "=VALUE; a table value is written {key = value, ...}), or correct "
+                             "the key's path");
     }
     if (!parent || parts.back().front() == '[')
       throw InputError("--set", std::string(assignment), "cannot place this key in the config",
@@ -387,13 +389,17 @@ void Config::check_unknown_keys() const {
   for (const auto& k : s_->known) known.insert(strip_indices(k));
   const std::string& u = unknown.front();
   const toml::node* n = s_->input.at_path(u).node();
-  throw InputError(u, n ? describe(*n) : "", "unknown key",
-                   unknown_key_fix(strip_indices(u), known));
+  throw InputError(u, n ? describe(*n) : "", "unknown key", unknown_key_fix(u, known));
 }
 
-std::string unknown_key_fix(const std::string& key, const std::set<std::string>& known) {
-  const auto dot = key.rfind('.');
+std::string unknown_key_fix(const std::string& written, const std::set<std::string>& known) {
+  // The known keys carry no indices; a suggestion in the key's own table keeps the written one's
+  // (materials[1].densty: materials[1].density).
+  const std::string key = strip_indices(written);
+  const auto dot = key.rfind('.'), written_dot = written.rfind('.');
   const std::string table = dot == std::string::npos ? "" : key.substr(0, dot);
+  const std::string written_table =
+      written_dot == std::string::npos ? "" : written.substr(0, written_dot);
   const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
   const auto table_of = [](const std::string& k) {
     const auto d = k.rfind('.');
@@ -414,7 +420,8 @@ std::string unknown_key_fix(const std::string& key, const std::set<std::string>&
   if (!leaves.empty()) {
     const std::string best = nearest(leaf, leaves);
     if (edit_distance(leaf, best) <= near)
-      return "did you mean '" + (table.empty() ? best : table + "." + best) + "'? (or remove it)";
+      return "did you mean '" + (table.empty() ? best : written_table + "." + best) +
+             "'? (or remove it)";
   }
   std::vector<std::string> same_leaf;
   for (const auto& k : known)

@@ -88,8 +88,9 @@ class Config {
 std::size_t edit_distance(std::string_view a, std::string_view b);
 /// The entry of `candidates` nearest to `word` (empty if none).
 std::string nearest(std::string_view word, const std::vector<std::string>& candidates);
-/// The fix for an unknown key (indices stripped) given the keys the scenario read: the nearest
-/// key of the same table, the same name in another table, or the table's keys.
-std::string unknown_key_fix(const std::string& key, const std::set<std::string>& known);
+/// The fix for an unknown key (as written, with any indices) given the keys the scenario read
+/// (indices stripped): the nearest key of the same table, the same name in another table, or the
+/// table's keys.
+std::string unknown_key_fix(const std::string& written, const std::set<std::string>& known);
 
 }  // namespace lbdem

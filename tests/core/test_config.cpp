@@ -40,6 +40,9 @@ TEST_CASE("an unknown key is matched within its own table first", "[core][config
   CHECK(unknown_key_fix("dem.xyzzy", kKnown) ==
         "remove it (the keys read from [dem] are dt, impact_speed, skin)");
   CHECK(unknown_key_fix("nothing.like.it", kKnown) == "remove it");
+  // In an array of tables the suggestion keeps the index written.
+  CHECK(unknown_key_fix("materials[1].densty", kKnown) ==
+        "did you mean 'materials[1].density'? (or remove it)");
 }
 
 TEST_CASE("values in input errors read as written, not at 17 digits", "[core][config]") {
