@@ -98,19 +98,19 @@ CgSettings validate(const CgInput& in, const std::string& section) {
   const auto& n = in.particles_per_parcel;
   // !(x >= 1) also rejects NaN.
   if (l && !(*l >= 1 && std::isfinite(*l)))
-    throw InputError(key("size_factor"), to_text(*l),
+    throw InputError(key("size_factor"), shortest_text(*l),
                      "a parcel cannot be smaller than an original particle",
-                     "give a size factor l >= 1 (parcel diameter / original diameter)");
+                     std::string(kSizeFactorFix));
   if (n && !(*n >= 1 && std::isfinite(*n)))
-    throw InputError(key("particles_per_parcel"), to_text(*n),
+    throw InputError(key("particles_per_parcel"), shortest_text(*n),
                      "a parcel stands for at least one original particle",
-                     "give particles_per_parcel >= 1 (= size_factor^3)");
+                     std::string(kParticlesPerParcelFix));
   if (l && n) {
     // 1e-6: values typed by hand carry ~6 digits (8 parcels of 2.0, 4.096 of 1.6); a real mismatch
     // is far larger.
     if (std::abs(size_factor_from_particles_per_parcel(*n) - *l) > 1e-6 * *l)
-      throw InputError(key("particles_per_parcel"), to_text(*n),
-                       "disagrees with size_factor = " + to_text(*l) +
+      throw InputError(key("particles_per_parcel"), shortest_text(*n),
+                       "disagrees with size_factor = " + shortest_text(*l) +
                            " (it needs particles_per_parcel = size_factor^3 = " +
                            to_text(particles_per_parcel(*l)) + ")",
                        "give only one of size_factor and particles_per_parcel");

@@ -60,6 +60,12 @@ struct CgSettings {
   double size_factor = 1.0;  // l [-]
 };
 
+/// The fixes validate gives for a size below 1 (the config reader gives them for one not finite).
+inline constexpr std::string_view kSizeFactorFix =
+    "give a size factor l >= 1 (parcel diameter / original diameter)";
+inline constexpr std::string_view kParticlesPerParcelFix =
+    "give particles_per_parcel >= 1 (= size_factor^3)";
+
 /// Validates `in`; errors are InputError with keys under `section` ("coarse_grain.rule", ...).
 /// Neither size given: l = 1 (no coarse graining).
 CgSettings validate(const CgInput& in, const std::string& section = "coarse_grain");

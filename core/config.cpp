@@ -54,6 +54,9 @@ toml::table* parent_table(toml::table& root, const std::vector<std::string>& par
     } else {
       auto* tbl = node->as_table();
       if (!tbl) return nullptr;
+      // Tables are made as needed; entries of an array of tables are not (their fields have no
+      // defaults to fill them).
+      if (!tbl->contains(c) && parts[k + 1].front() == '[') return nullptr;
       if (!tbl->contains(c)) tbl->insert(c, toml::table{});
       node = tbl->get(c);
     }
@@ -61,33 +64,48 @@ toml::table* parent_table(toml::table& root, const std::vector<std::string>& par
   return node ? node->as_table() : nullptr;
 }
 
-// The shortest text that reads back as v: 0.1 stays 0.1 (toml++ prints 17 digits), and a value
-// just past a limit does not print as the limit (1.0000001 against "<= 1" would read "1" at 6
-// digits).
-std::string shortest(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-// A value as the user wrote it: numbers as shortest() gives them, strings quoted, arrays element
-// by element.
-std::string describe(const toml::node& n) {
+// A value as the user wrote it, on one line: numbers as shortest_text() gives them, strings
+// quoted with their control characters escaped, arrays element by element and tables inline.
+std::string describe_full(const toml::node& n) {
   if (const auto* a = n.as_array()) {
     std::string s = "[";
-    for (std::size_t i = 0; i < a->size(); ++i) s += (i ? ", " : "") + describe(*a->get(i));
+    for (std::size_t i = 0; i < a->size(); ++i) s += (i ? ", " : "") + describe_full(*a->get(i));
     return s + "]";
   }
-  if (const auto* d = n.as_floating_point()) return shortest(d->get());
-  std::ostringstream os;
-  n.visit([&](auto&& v) {
-    if constexpr (toml::is_string<decltype(v)>) {
-      os << '"' << v.get() << '"';
-    } else {
-      os << v;
+  if (const auto* t = n.as_table()) {
+    std::string s = "{";
+    for (auto&& [k, v] : *t)
+      s += (s.size() > 1 ? ", " : "") + std::string(k.str()) + " = " + describe_full(v);
+    return s + "}";
+  }
+  if (const auto* d = n.as_floating_point()) return shortest_text(d->get());
+  if (const auto* str = n.as_string()) {
+    std::string s = "\"";
+    for (char c : str->get()) {
+      if (c == '\n')
+        s += "\\n";
+      else if (c == '\t')
+        s += "\\t";
+      else if (c == '\r')
+        s += "\\r";
+      else if (c == '"' || c == '\\')
+        s += '\\', s += c;
+      else
+        s += c;
     }
-  });
+    return s + '"';
+  }
+  std::ostringstream os;
+  n.visit([&](auto&& v) { os << v; });
   return os.str();
+}
+
+// describe_full cut to fit the error's one line (a whole [[fill]] table written where a value
+// belongs would fill a screen).
+std::string describe(const toml::node& n) {
+  std::string s = describe_full(n);
+  if (s.size() > 80) s = s.substr(0, 76) + " ...";
+  return s;
 }
 
 void collect_unknown(const toml::table& t, const std::string& prefix,
@@ -187,23 +205,61 @@ void Config::set_override(std::string_view assignment) {
     parsed = toml::table{{"v", value}};  // a bare word: take it as a string
   }
   const auto parts = split_path(key);
+  if (parts.empty())
+    throw InputError("--set", std::string(assignment), "names no key",
+                     "write for example --set run.end_time=0.5");
+  for (const std::string& c : parts)
+    if (c.front() == '[' &&
+        (c.size() < 3 || c.back() != ']' || c.find_first_not_of("0123456789", 1) != c.size() - 1))
+      throw InputError(
+          "--set", std::string(assignment), "index " + c + " is not a whole number",
+          "write entries of an array of tables as e.g. --set 'materials[0].density=900'");
   for (toml::table* root : {&s_->input, &s_->resolved}) {
     toml::table* parent = parent_table(*root, parts);
     if (!parent) {
-      // A part of the path that holds a value, not a table (a face given as "wall" and then
-      // --set on one of its fields): name it, and what to set instead.
+      // The path runs through a value (a face given as "wall" and then --set on one of its
+      // fields), indexes what is not an array of tables, or indexes past its end: name the part.
       std::string at;
       const toml::node* node = root;
-      for (std::size_t i = 0; i + 1 < parts.size() && node && node->is_table(); ++i) {
-        at += (at.empty() || parts[i].front() == '[' ? "" : ".") + parts[i];
-        node = node->as_table()->get(parts[i]);
+      std::size_t i = 0;
+      for (; i + 1 < parts.size(); ++i) {
+        const std::string& c = parts[i];
+        if (c.front() == '[') {
+          const auto* arr = node->as_array();
+          if (!arr) break;
+          const auto idx = std::stoul(c.substr(1, c.size() - 2));
+          if (idx >= arr->size())
+            throw InputError(at, "",
+                             "has " + std::to_string(arr->size()) + " entries, so " + at + c +
+                                 " is none of them",
+                             "use an index below " + std::to_string(arr->size()) +
+                                 ", or add the entry ([[" + at + "]]) to the config file");
+          node = arr->get(idx);
+        } else {
+          const auto* tbl = node->as_table();
+          if (!tbl) break;
+          node = tbl->get(c);
+          if (!node) {
+            const std::string name = at + (at.empty() ? "" : ".") + c;
+            throw InputError(
+                name, "", "is not in the config, so " + key + " cannot be set",
+                "correct the name, or add its entries ([[" + name + "]]) to the config file");
+          }
+        }
+        at += (at.empty() || c.front() == '[' ? "" : ".") + c;
       }
-      if (node && !node->is_table() && !node->is_array())
+      // A whole entry (--set materials[0]=...) is for the message below.
+      const bool entry = i + 1 == parts.size() && parts[i].front() == '[';
+      if (!entry && parts[i].front() == '[')
+        throw InputError(at, describe(*node),
+                         "is not an array of tables, so " + key + " has no place",
+                         "drop the index " + parts[i] + ", or correct the key's path");
+      if (!entry)
         throw InputError(at, describe(*node),
                          "holds a value, not a table, so " + key + " has no place",
                          "set " + at + " itself (--set " + at +
-                             "=VALUE; a table value is written {key = value, ...}), or correct "
-                             "the key's path");
+                             "=VALUE; a table value is written {key = value, ...}), or correct the "
+                             "key's path");
     }
     if (!parent || parts.back().front() == '[')
       throw InputError("--set", std::string(assignment), "cannot place this key in the config",
@@ -259,8 +315,10 @@ void Config::check_range(std::string_view key, double v, const Range& r) const {
     if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
     if (std::isfinite(r.hi))
       want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
-    throw InputError(path(key), shortest(v), "must be " + (want.empty() ? "finite" : want),
-                     r.fix.empty() ? "give a value in that range" : std::string(r.fix));
+    throw InputError(path(key), shortest_text(v), "must be " + (want.empty() ? "finite" : want),
+                     !r.fix.empty() ? std::string(r.fix)
+                     : want.empty() ? "give a finite number"
+                                    : "give a value in that range");
   }
 }
 
@@ -392,14 +450,52 @@ void Config::check_unknown_keys() const {
   throw InputError(u, n ? describe(*n) : "", "unknown key", unknown_key_fix(u, known));
 }
 
+namespace {
+
+// The suggestion with the indices of the key as written, part by part where the parts match
+// (materails[1].density: materials[1].density), so that it names the entry the user meant; a part
+// of another table (materials[1].viscosity: fluid.viscosity) gets none.
+std::string with_written_indices(const std::string& suggestion, const std::string& written) {
+  std::vector<std::string> w;
+  for (const auto& c : split_path(written)) {
+    if (c.front() == '[' && !w.empty())
+      w.back() += c;
+    else
+      w.push_back(c);
+  }
+  std::string out;
+  std::size_t i = 0;
+  for (const auto& c : split_path(suggestion)) {
+    std::string part = c;
+    if (i < w.size()) {
+      const auto br = w[i].find('[');
+      const std::string name = w[i].substr(0, br);
+      if (br != std::string::npos &&
+          edit_distance(name, c) <= std::max<std::size_t>(1, name.size() / 3))
+        part += w[i].substr(br);
+    }
+    out += (out.empty() ? "" : ".") + part;
+    ++i;
+  }
+  return out;
+}
+
+std::string did_you_mean(const std::vector<std::string>& keys, const std::string& written) {
+  std::string s = "did you mean ";
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    s += std::string(i == 0                 ? ""
+                     : i + 1 == keys.size() ? " or "
+                                            : ", ") +
+         "'" + with_written_indices(keys[i], written) + "'";
+  return s + "? (or remove it)";
+}
+
+}  // namespace
+
 std::string unknown_key_fix(const std::string& written, const std::set<std::string>& known) {
-  // The known keys carry no indices; a suggestion in the key's own table keeps the written one's
-  // (materials[1].densty: materials[1].density).
   const std::string key = strip_indices(written);
-  const auto dot = key.rfind('.'), written_dot = written.rfind('.');
+  const auto dot = key.rfind('.');
   const std::string table = dot == std::string::npos ? "" : key.substr(0, dot);
-  const std::string written_table =
-      written_dot == std::string::npos ? "" : written.substr(0, written_dot);
   const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
   const auto table_of = [](const std::string& k) {
     const auto d = k.rfind('.');
@@ -410,29 +506,35 @@ std::string unknown_key_fix(const std::string& written, const std::set<std::stri
     return d == std::string::npos ? k : k.substr(d + 1);
   };
   // A misspelling stays within its table: the nearest key there, if it is near (a third of the
-  // name, at least 2 edits). Else the same name in another table (a key written in the wrong
-  // one). Else nothing is near: the closest of a few hundred paths, whatever table it is in,
-  // misleads more than it helps, so list the table's keys instead.
+  // name, at least 2 edits, but never the whole name: "e" is not a misspelt "dt"). Else the same
+  // name in another table (a key written in the wrong one). Else nothing is near: the closest of
+  // a few hundred paths, whatever table it is in, misleads more than it helps, so list the
+  // table's keys instead.
   std::vector<std::string> siblings, leaves;
   for (const auto& k : known)
     if (table_of(k) == table) siblings.push_back(k), leaves.push_back(leaf_of(k));
-  const std::size_t near = std::max<std::size_t>(2, leaf.size() / 3);
   if (!leaves.empty()) {
     const std::string best = nearest(leaf, leaves);
-    if (edit_distance(leaf, best) <= near)
-      return "did you mean '" + (table.empty() ? best : written_table + "." + best) +
-             "'? (or remove it)";
+    const std::size_t d = edit_distance(leaf, best);
+    // The known keys carry no indices, so the name itself may be known from another entry of an
+    // array of tables (a lognormal fill's sigma written in a fixed one).
+    if (d == 0)
+      return "remove it (other entries read it, not " + written.substr(0, written.rfind('.')) +
+             ": its other settings do not use it)";
+    if (d <= std::max<std::size_t>(2, leaf.size() / 3) && d < std::min(leaf.size(), best.size()))
+      return did_you_mean({table.empty() ? best : table + "." + best}, written);
   }
   std::vector<std::string> same_leaf;
   for (const auto& k : known)
     if (leaf_of(k) == leaf) same_leaf.push_back(k);
-  if (!same_leaf.empty()) return "did you mean '" + nearest(key, same_leaf) + "'? (or remove it)";
+  if (same_leaf.size() > 3) same_leaf = {nearest(key, same_leaf)};
+  if (!same_leaf.empty()) return did_you_mean(same_leaf, written);
   if (siblings.empty()) {
     // A misspelt table: the nearest path, if it is near as a whole.
     const std::vector<std::string> all(known.begin(), known.end());
     const std::string best = nearest(key, all);
     if (!best.empty() && edit_distance(key, best) <= std::max<std::size_t>(2, key.size() / 4))
-      return "did you mean '" + best + "'? (or remove it)";
+      return did_you_mean({best}, written);
     return "remove it";
   }
   std::string list;

@@ -3,7 +3,7 @@
 //
 // Every key a scenario reads is recorded together with the value it resolved to (the default where
 // the file is silent), so that (1) the run folder gets the fully resolved config.toml and (2) any
-// key in the input that nobody read is reported as unknown, with the nearest known key as a hint.
+// key in the input that nobody read is reported as unknown, with a fix (unknown_key_fix).
 #include "core/types.hpp"
 
 #include <toml++/toml.h>
@@ -89,8 +89,9 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 /// The entry of `candidates` nearest to `word` (empty if none).
 std::string nearest(std::string_view word, const std::vector<std::string>& candidates);
 /// The fix for an unknown key (as written, with any indices) given the keys the scenario read
-/// (indices stripped): the nearest key of the same table, the same name in another table, or the
-/// table's keys.
+/// (indices stripped): the nearest key of the same table; the same name in other tables; the
+/// nearest whole path, for a misspelt table; or the table's keys. Suggestions keep the written
+/// indices where their parts match.
 std::string unknown_key_fix(const std::string& written, const std::set<std::string>& known);
 
 }  // namespace lbdem

@@ -1,5 +1,6 @@
 #pragma once
 // Input errors: one line naming the key, the value and the fix; the executables map them to exit 2.
+#include <charconv>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,15 @@ inline std::string to_text(double v, int digits = 6) {
   os.precision(digits);
   os << v;
   return os.str();
+}
+
+/// A value the user gave, as the shortest text that reads back as it: 0.1 stays 0.1 (toml++ prints
+/// 17 digits), and a value just past a limit does not print as the limit (1.0000001 against "<= 1"
+/// reads "1" at 6 digits).
+inline std::string shortest_text(double v) {
+  char buf[32];  // the longest double is 24 characters
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 /// Renders a list of numbers as TOML writes it: [a, b, c].

@@ -140,7 +140,8 @@ int run_scenario(const RunOptions& opt) {
   const bool resume = !opt.resume.empty();
   std::string name = opt.scenario;
   if (resume && !fs::is_directory(opt.resume))
-    throw InputError("--resume", opt.resume, "no such folder",
+    throw InputError("--resume", opt.resume,
+                     fs::exists(opt.resume) ? "is a file, not a run folder" : "no such folder",
                      "give the run folder of the run to continue (its --out)");
   if (resume && !fs::exists(opt.resume + "/checkpoint.h5"))
     throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder",

@@ -43,6 +43,61 @@ TEST_CASE("an unknown key is matched within its own table first", "[core][config
   // In an array of tables the suggestion keeps the index written.
   CHECK(unknown_key_fix("materials[1].densty", kKnown) ==
         "did you mean 'materials[1].density'? (or remove it)");
+  // ... and so does a misspelt table's, but not another table's.
+  CHECK(unknown_key_fix("materails[1].density", kKnown) ==
+        "did you mean 'materials[1].density'? (or remove it)");
+  CHECK(unknown_key_fix("materials[1].viscosity", kKnown) ==
+        "did you mean 'fluid.viscosity'? (or remove it)");
+  // A name known in another entry of the same array (a lognormal fill's sigma in a fixed one) is
+  // not suggested as itself.
+  CHECK(unknown_key_fix("materials[1].density", kKnown) ==
+        "remove it (other entries read it, not materials[1]: its other settings do not use it)");
+  // The same name in several tables: all of them.
+  CHECK(unknown_key_fix("dem.density", {"fluid.density", "materials.density", "dem.dt"}) ==
+        "did you mean 'fluid.density' or 'materials.density'? (or remove it)");
+  // A one-letter name is not a misspelling of a two-letter one ("e" for "dt").
+  CHECK(unknown_key_fix("dem.e", kKnown) ==
+        "remove it (the keys read from [dem] are dt, impact_speed, skin)");
+  CHECK(unknown_key_fix("dem.st", kKnown) == "did you mean 'dem.dt'? (or remove it)");
+}
+
+TEST_CASE("a --set path names the part that cannot hold the key", "[core][config]") {
+  const auto set_error = [](const std::string& toml, const std::string& assignment) {
+    try {
+      Config::from_string(toml).set_override(assignment);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string doc = "[a]\nkind = \"wall\"\nlo = [0.0, 1.0]\n[[m]]\nx = 1.0\n";
+  CHECK_THAT(set_error(doc, "a.kind.speed=1"),
+             Contains("'a.kind' = \"wall\": holds a value, not a table"));
+  CHECK_THAT(set_error(doc, "a.lo.x=1"), Contains("'a.lo' = [0, 1]: holds a value"));
+  CHECK_THAT(set_error(doc, "m[2].x=1"),
+             Contains("'m': has 1 entries, so m[2] is none of them; fix: use an index below 1"));
+  CHECK_THAT(set_error(doc, "a[0].kind=1"), Contains("'a' = {kind = \"wall\", lo = [0, 1]}"));
+  CHECK_THAT(set_error(doc, "q[0].x=1"), Contains("'q': is not in the config"));
+  CHECK_THAT(set_error(doc, "m[one].x=1"), Contains("index [one] is not a whole number"));
+  CHECK_THAT(set_error(doc, "m[0]=1"), Contains("cannot place this key"));
+  CHECK_THAT(set_error(doc, " . =1"), Contains("names no key"));
+  CHECK(set_error(doc, "m[0].x=2").empty());
+  CHECK(set_error(doc, "b.c.d=2").empty());  // new tables are made as needed
+}
+
+TEST_CASE("a table in an error prints inline on its one line", "[core][config]") {
+  // [materials] where [[materials]] belongs: toml++ would print the table as multi-line TOML.
+  const std::string e =
+      error_of("[m]\nname = \"a\\nb\"\nx = 0.1\n", [](const Config& c) { c.table_array("m"); });
+  CHECK_THAT(e, Contains("'m' = {name = \"a\\nb\", x = 0.1}: expected an array of tables"));
+  CHECK(e.find('\n') == std::string::npos);
+}
+
+TEST_CASE("a value that is not finite gets the key's own fix", "[core][config]") {
+  // size_factor has no range of its own in the reader (cg::validate's >= 1 is the one the user
+  // sees); nan still stops at the reader, with that fix rather than an empty range's.
+  CHECK_THAT(error_of("[a]\nx = nan\n", [](const Config& c) { c.get("a.x", 1.0); }),
+             Contains("'a.x' = nan: must be finite; fix: give a finite number"));
 }
 
 TEST_CASE("values in input errors read as written, not at 17 digits", "[core][config]") {

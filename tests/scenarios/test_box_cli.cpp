@@ -6,6 +6,7 @@
 #include <cstring>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 
@@ -42,6 +43,15 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
       {"particle=[{position=[1.0,0.0,0.0],radius=1e-3}]",
        "particle[0].position"},                      // outside the box
       {"fill[0].hi=[0.06,0.06,0.5]", "fill[0].hi"},  // the corner that is out, not lo
+      // --set paths that cannot be placed name the part in the way:
+      {"fill[3].count=10", "fill"},                          // past the array's one entry
+      {"fill[0].radius.kind.x=1", "fill[0].radius.kind"},    // through a value
+      {"box.lo.x=1", "box.lo"},                              // through an array of numbers
+      {"run[0].seed=1", "run"},                              // indexing a table
+      {"fill[x].count=1", "--set"},                          // an index that is no number
+      {".=1", "--set"},                                      // no key at all
+      {"materials[0].densty=900", "materials[0].densty"},    // unknown, in an entry
+      {"fill[0].radius.sigma=0.1", "fill[0].radius.sigma"},  // read for lognormal fills only
   };
   for (const auto& c : cases) {
     const std::string out = tmpdir("bad");
@@ -60,6 +70,19 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
   CHECK_FALSE(fs::exists(t0_out));
   CHECK(t0.err.find("'--threads' = 0") != std::string::npos);
   CHECK(std::count(t0.err.begin(), t0.err.end(), '\n') == 1);
+  // --resume of a folder that is not there, or of a file: said so, and nothing written.
+  const std::string missing = tmpdir("no_such_run"), file = tmpdir("resume_file");
+  std::ofstream(file) << "not a run folder\n";
+  for (const std::string& bad : {missing, file}) {
+    const auto r = cli("run --resume " + bad);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("'--resume' = " + bad) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  CHECK(cli("run --resume " + file).err.find("is a file") != std::string::npos);
+  fs::remove(file);
+  CHECK_FALSE(fs::exists(missing));
   // The nearest known key is suggested for a misspelt one.
   CHECK(cli("run box --set dem.dtt=1e-6").err.find("did you mean 'dem.dt'") != std::string::npos);
 }

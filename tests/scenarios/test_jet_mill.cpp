@@ -395,13 +395,14 @@ TEST_CASE("jet mill gas: a resumed run equals one that never stopped", "[scenari
 TEST_CASE("jet mill with particles: the feed delivers its mass into the chamber, which holds it",
           "[scenarios][jet_mill]") {
   // The default preset (CG-10 parcels fed at 0.1 kg/s, two-way coupled, 1 mm cells) for 0.25 ms
-  // (13-16 s under the sanitizers in CI). The feed inserts every 0.1 ms (80 steps of 1.25 us) what
-  // its rate asks by then: the last insertion, at 0.2 ms, brings the total to 0.1 kg/s x 0.2 ms,
-  // past it by less than one parcel (a fill stops at the particle that reaches its mass; the
-  // largest parcel, r = 215 um, has 6.3e-8 kg), and no warning that the region is full. The run
-  // ends half-way between two insertions, so which step is the last one does not hang on how the
-  // end time rounds. The chamber's walls (cylinder, floor, top
-  // plate) keep every centre inside it; through the vortex finder none has left yet (the feed
+  // (0.5 s in Release). The DEM takes the gas step, 0.1 x 1 mm / 120 m/s = 0.83 us, so the feed
+  // inserts every 0.1 ms (120 steps) what its rate asks by then, and the run's 300 steps are a
+  // whole number of 5-step exchanges (the maps' window ends on the last one): the last insertion,
+  // at 0.2 ms, brings the total to 0.1 kg/s x 0.2 ms, past it by less than one parcel (a fill stops
+  // at the particle that reaches its mass; the largest parcel, r = 215 um, has 6.3e-8 kg), and no
+  // warning that the region is full. The run ends half-way between two insertions, so which step is
+  // the last one does not hang on how the end time rounds. The chamber's walls (cylinder, floor,
+  // top plate) keep every centre inside it; through the vortex finder none has left yet (the feed
   // region's nearest point is 3 mm outside the outlet's edge, and the feed moves along +y, away
   // from it).
   const std::string out = tmpdir("jet_mill_feed");
