@@ -230,7 +230,8 @@ void Config::set_override(std::string_view assignment) {
           const auto idx = std::stoul(c.substr(1, c.size() - 2));
           if (idx >= arr->size())
             throw InputError(at, "",
-                             "has " + std::to_string(arr->size()) + " entries, so " + at + c +
+                             "has " + std::to_string(arr->size()) +
+                                 (arr->size() == 1 ? " entry, so " : " entries, so ") + at + c +
                                  " is none of them",
                              "use an index below " + std::to_string(arr->size()) +
                                  ", or add the entry ([[" + at + "]]) to the config file");

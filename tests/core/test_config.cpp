@@ -75,7 +75,7 @@ TEST_CASE("a --set path names the part that cannot hold the key", "[core][config
              Contains("'a.kind' = \"wall\": holds a value, not a table"));
   CHECK_THAT(set_error(doc, "a.lo.x=1"), Contains("'a.lo' = [0, 1]: holds a value"));
   CHECK_THAT(set_error(doc, "m[2].x=1"),
-             Contains("'m': has 1 entries, so m[2] is none of them; fix: use an index below 1"));
+             Contains("'m': has 1 entry, so m[2] is none of them; fix: use an index below 1"));
   CHECK_THAT(set_error(doc, "a[0].kind=1"), Contains("'a' = {kind = \"wall\", lo = [0, 1]}"));
   CHECK_THAT(set_error(doc, "q[0].x=1"), Contains("'q': is not in the config"));
   CHECK_THAT(set_error(doc, "m[one].x=1"), Contains("index [one] is not a whole number"));
