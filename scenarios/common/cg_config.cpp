@@ -11,12 +11,11 @@ CoarseGrain read_coarse_grain(const Config& c, const std::string& normal_law) {
   // The range (>= 1) is cg::validate's, with the reason; a "> 0" range here would fire first on
   // a negative value and contradict its own fix. Only a value that is not finite stops here,
   // with the same fix.
-  const auto any = [](std::string_view fix) {
-    return Range{-Range::kInf, Range::kInf, false, false, fix};
-  };
-  if (c.has("size_factor")) in.size_factor = c.get("size_factor", 1.0, any(cg::kSizeFactorFix));
+  if (c.has("size_factor"))
+    in.size_factor = c.get("size_factor", 1.0, Range{.fix = cg::kSizeFactorFix});
   if (c.has("particles_per_parcel"))
-    in.particles_per_parcel = c.get("particles_per_parcel", 1.0, any(cg::kParticlesPerParcelFix));
+    in.particles_per_parcel =
+        c.get("particles_per_parcel", 1.0, Range{.fix = cg::kParticlesPerParcelFix});
   CoarseGrain out;
   out.settings = cg::validate(in, "coarse_grain");
   out.scale_dt = c.get_bool("scale_dt", true);

@@ -93,9 +93,10 @@ TEST_CASE("a table in an error prints inline on its one line", "[core][config]")
   CHECK(e.find('\n') == std::string::npos);
 }
 
-TEST_CASE("a value that is not finite gets the key's own fix", "[core][config]") {
-  // size_factor has no range of its own in the reader (cg::validate's >= 1 is the one the user
-  // sees); nan still stops at the reader, with that fix rather than an empty range's.
+TEST_CASE("a value that is not finite, with no range given, gets a fix", "[core][config]") {
+  // The default range only asks for a finite number; its fix must not point at a range
+  // ("give a value in that range") that the message does not state. (A key with a fix of its
+  // own, coarse_grain.size_factor, is checked through the executable in test_box_cli.)
   CHECK_THAT(error_of("[a]\nx = nan\n", [](const Config& c) { c.get("a.x", 1.0); }),
              Contains("'a.x' = nan: must be finite; fix: give a finite number"));
 }

@@ -70,6 +70,9 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
   CHECK_FALSE(fs::exists(t0_out));
   CHECK(t0.err.find("'--threads' = 0") != std::string::npos);
   CHECK(std::count(t0.err.begin(), t0.err.end(), '\n') == 1);
+  // A size factor that is not finite stops at the reader, with coarse graining's own fix.
+  CHECK(cli("run box --set coarse_grain.size_factor=nan").err.find("give a size factor l >= 1") !=
+        std::string::npos);
   // --resume of a folder that is not there, or of a file: said so, and nothing written.
   const std::string missing = tmpdir("no_such_run"), file = tmpdir("resume_file");
   std::ofstream(file) << "not a run folder\n";
