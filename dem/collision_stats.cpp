@@ -42,16 +42,16 @@ void CollisionStats::add_closed(const ContactTally& t) {
   closed_[3] += t.e_rolling;
 }
 
-void CollisionStats::on_end(const ContactTally& t, double t_end, std::int64_t id_i,
-                            std::int64_t id_j, const Vec3& where) {
+void CollisionStats::on_end(const ContactTally& t, const ContactRecord& r, double t_end,
+                            std::int64_t id_i, std::int64_t id_j, const Vec3& where) {
   add_closed(t);
   const std::size_t c = grid_.cell_of(where);
   ++grid_count_[c];
   grid_energy_[c] += t.dissipated();
   if (s_.rows && t_end >= s_.rows_t0 && t_end <= s_.rows_t1) {
     if (static_cast<std::int64_t>(rows_.size()) < s_.row_budget) {
-      rows_.push_back({t.t_start, t_end, id_i, id_j, t.vn_impact, t.vt_impact, t.max_overlap,
-                       t.max_force, t.dissipated()});
+      rows_.push_back({r.t_start, t_end, id_i, id_j, r.vn_impact, r.vt_impact, r.max_overlap,
+                       r.max_force, t.dissipated()});
     } else {
       ++rows_dropped_;
     }

@@ -34,8 +34,8 @@ class CollisionStats {
  public:
   void setup(const CollisionSettings& s, const Domain& d);
   void on_start(bool wall, double vn, double vt);
-  void on_end(const ContactTally& t, double t_end, std::int64_t id_i, std::int64_t id_j,
-              const Vec3& where);
+  void on_end(const ContactTally& t, const ContactRecord& r, double t_end, std::int64_t id_i,
+              std::int64_t id_j, const Vec3& where);
 
   std::int64_t started_pp() const { return started_[0]; }
   std::int64_t started_pw() const { return started_[1]; }

@@ -9,9 +9,11 @@
 namespace lbdem::dem {
 
 namespace {
-// Both are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
+// All are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
 static_assert(sizeof(ContactHistory) == 8 * sizeof(double) &&
-              sizeof(ContactTally) == 13 * sizeof(double));
+              sizeof(ContactTally) == 8 * sizeof(double) &&
+              sizeof(ContactRecord) == 5 * sizeof(double));
+constexpr std::size_t kTallyWidth = 8, kRecordWidth = 5;
 
 template <class T>
 std::vector<double> flatten(const std::vector<T>& v) {
@@ -24,6 +26,28 @@ std::vector<T> unflatten(const std::vector<double>& d) {
   std::vector<T> out(d.size() * sizeof(double) / sizeof(T));
   if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), d.data(), out.size() * sizeof(T));
   return out;
+}
+// A contact's tally and impact record are stored as one row of 13 doubles, as before they were
+// split in memory, so that checkpoints of either build resume in the other.
+std::vector<double> flatten(const std::vector<ContactTally>& t,
+                            const std::vector<ContactRecord>& r) {
+  std::vector<double> out(t.size() * (kTallyWidth + kRecordWidth));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    std::memcpy(&out[k * (kTallyWidth + kRecordWidth)], &t[k], sizeof(ContactTally));
+    std::memcpy(&out[k * (kTallyWidth + kRecordWidth) + kTallyWidth], &r[k], sizeof(ContactRecord));
+  }
+  return out;
+}
+void unflatten(const std::vector<double>& d, std::vector<ContactTally>& t,
+               std::vector<ContactRecord>& r) {
+  const std::size_t n = d.size() / (kTallyWidth + kRecordWidth);
+  t.assign(n, {}), r.assign(n, {});
+  for (std::size_t k = 0; k < n; ++k) {
+    std::memcpy(static_cast<void*>(&t[k]), &d[k * (kTallyWidth + kRecordWidth)],
+                sizeof(ContactTally));
+    std::memcpy(static_cast<void*>(&r[k]), &d[k * (kTallyWidth + kRecordWidth) + kTallyWidth],
+                sizeof(ContactRecord));
+  }
 }
 template <class A, class B>
 std::vector<B> cast(const std::vector<A>& a) {
@@ -60,14 +84,14 @@ void DemSolver::save(H5Out& f) const {
   f.write("/dem/pairs_i", cast<std::uint32_t, std::int64_t>(pairs_.i));
   f.write("/dem/pairs_j", cast<std::uint32_t, std::int64_t>(pairs_.j));
   f.write("/dem/pairs_history", flatten(pairs_.history));
-  f.write("/dem/pairs_tally", flatten(pairs_.tally));
+  f.write("/dem/pairs_tally", flatten(pairs_.tally, pairs_.record));
   f.write("/dem/pairs_state", pairs_.state);
   f.write("/dem/pairs_first", cast<std::uint32_t, std::int64_t>(pairs_.first));
   f.write("/dem/wc_particle", cast<std::uint32_t, std::int64_t>(wc_.particle));
   f.write("/dem/wc_wall", cast<std::uint16_t, std::int64_t>(wc_.wall));
   f.write("/dem/wc_tri", cast<std::int32_t, std::int64_t>(wc_.tri));
   f.write("/dem/wc_history", flatten(wc_.history));
-  f.write("/dem/wc_tally", flatten(wc_.tally));
+  f.write("/dem/wc_tally", flatten(wc_.tally, wc_.record));
   f.write("/dem/wc_state", wc_.state);
   f.write("/dem/wc_first", cast<std::uint32_t, std::int64_t>(wc_.first));
   for (std::size_t w = 0; w < wall_ref_.size(); ++w)
@@ -113,7 +137,7 @@ void DemSolver::load(const H5In& f) {
   pairs_.i = cast<std::int64_t, std::uint32_t>(pi);
   pairs_.j = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_j"));
   pairs_.history = unflatten<ContactHistory>(f.doubles("/dem/pairs_history"));
-  pairs_.tally = unflatten<ContactTally>(f.doubles("/dem/pairs_tally"));
+  unflatten(f.doubles("/dem/pairs_tally"), pairs_.tally, pairs_.record);
   pairs_.state = f.uint8s("/dem/pairs_state");
   if (pairs_.history.size() != pi.size() || pairs_.tally.size() != pi.size() ||
       pairs_.state.size() != pi.size())
@@ -126,7 +150,7 @@ void DemSolver::load(const H5In& f) {
   wc_.wall = cast<std::int64_t, std::uint16_t>(f.int64s("/dem/wc_wall"));
   wc_.tri = cast<std::int64_t, std::int32_t>(f.int64s("/dem/wc_tri"));
   wc_.history = unflatten<ContactHistory>(f.doubles("/dem/wc_history"));
-  wc_.tally = unflatten<ContactTally>(f.doubles("/dem/wc_tally"));
+  unflatten(f.doubles("/dem/wc_tally"), wc_.tally, wc_.record);
   wc_.state = f.uint8s("/dem/wc_state");
   if (wc_.history.size() != wp.size() || wc_.tally.size() != wp.size() ||
       wc_.state.size() != wp.size())

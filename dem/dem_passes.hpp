@@ -9,12 +9,13 @@
 
 namespace lbdem::dem {
 
-/// Books one evaluation into the contact's tally and state bits. Damping energy is integrated with
-/// the trapezoidal rule over the powers at consecutive steps (second order; the velocity-Verlet
-/// energy error is of the same order, DESIGN §5); sliding and rolling losses are the energy the cap
-/// removed from the springs in the step; stiffness-change energy is booked apart.
+/// Books one evaluation into the contact's tally, impact record and state bits. Damping energy is
+/// integrated with the trapezoidal rule over the powers at consecutive steps (second order; the
+/// velocity-Verlet energy error is of the same order, DESIGN §5); sliding and rolling losses are
+/// the energy the cap removed from the springs in the step; stiffness-change energy is booked
+/// apart.
 template <bool kRolling>
-inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c,
+inline void book(ContactTally& t, ContactRecord& r, std::uint8_t& state, const ContactForce& c,
                  const ContactGeometry& g, double time, double dt, bool extremes) {
   const std::uint8_t old = state;
   const bool touch = g.delta > 0;
@@ -25,9 +26,7 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c,
       const double u = t.u_elastic;
       t = ContactTally{};
       t.u_elastic = u;
-      t.t_start = time;
-      t.vn_impact = vn;
-      t.vt_impact = (g.v_rel - vn * g.n).norm();
+      r = ContactRecord{.t_start = time, .vn_impact = vn, .vt_impact = (g.v_rel - vn * g.n).norm()};
       st |= kStarted;
     }
     t.e_normal_damping += 0.5 * dt * (t.p_normal_damping + c.p_normal_damping);
@@ -37,8 +36,8 @@ inline void book(ContactTally& t, std::uint8_t& state, const ContactForce& c,
     t.e_sliding += c.e_sliding;
     if constexpr (kRolling) t.e_rolling += c.e_rolling;
     if (extremes) {  // only the opt-in per-contact rows report them
-      t.max_overlap = std::max(t.max_overlap, g.delta);
-      t.max_force = std::max(t.max_force, c.fn);
+      r.max_overlap = std::max(r.max_overlap, g.delta);
+      r.max_force = std::max(r.max_force, c.fn);
     }
     st |= kTouching | kInteracting;
   } else if (old & kTouching) {
@@ -92,7 +91,8 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
         Law::evaluate_apart(tab.particle(p.material[i], p.material[j]), g, pl.history[k]);
     pl.j_force[slot] = -c.force;
     pl.j_torque[slot] = Vec3::Zero();
-    book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
+    book<Law::Rolling::active>(pl.tally[k], pl.record[k], pl.state[k], c, g, time, dt,
+                               s.collisions.rows);
     if (pl.state[k] & kInteracting) f_i += c.force;
     return;
   }
@@ -116,7 +116,8 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   const Vec3 tc = g.n.cross(c.ft);
   pl.j_force[slot] = -c.force;
   pl.j_torque[slot] = aj * tc - c.m_roll;
-  book<Law::Rolling::active>(pl.tally[k], pl.state[k], c, g, time, dt, s.collisions.rows);
+  book<Law::Rolling::active>(pl.tally[k], pl.record[k], pl.state[k], c, g, time, dt,
+                             s.collisions.rows);
   if (pl.state[k] & kInteracting) f_i += c.force, t_i += ai * tc + c.m_roll;
 }
 
@@ -186,7 +187,7 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
   // (it needs the wall's spin, and mu_r is small).
   wc.wall_torque[e] = (point - origin).cross(-c.force) - c.m_roll;
   wc.power[e] = c.force.dot(wall_velocity);
-  book<Law::Rolling::active>(wc.tally[e], wc.state[e], c, g, time, dt, rows);
+  book<Law::Rolling::active>(wc.tally[e], wc.record[e], wc.state[e], c, g, time, dt, rows);
 }
 
 template <class Table>
@@ -228,8 +229,10 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
         if (!kept_entry[q - e] || wc.state[q]) continue;
         for (std::size_t r = e; r < e1; ++r)
           if (!kept_entry[r - e] && (wc.state[r] & kInteracting)) {
-            wc.history[q] = wc.history[r], wc.tally[q] = wc.tally[r], wc.state[q] = wc.state[r];
-            wc.history[r] = ContactHistory{}, wc.tally[r] = ContactTally{}, wc.state[r] = 0;
+            wc.history[q] = wc.history[r], wc.tally[q] = wc.tally[r];
+            wc.record[q] = wc.record[r], wc.state[q] = wc.state[r];
+            wc.history[r] = ContactHistory{}, wc.tally[r] = ContactTally{};
+            wc.record[r] = ContactRecord{}, wc.state[r] = 0;
             break;
           }
       }

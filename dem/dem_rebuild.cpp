@@ -87,8 +87,8 @@ void DemSolver::rebuild() {
     if (q != kGone)
       for (std::size_t f = wc_.first[q]; f < wc_.first[q + 1]; ++f)
         if (wc_.wall[f] == old_wc.wall[e] && wc_.tri[f] == old_wc.tri[e]) {
-          wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e],
-          wc_.state[f] = old_wc.state[e];
+          wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e];
+          wc_.record[f] = old_wc.record[e], wc_.state[f] = old_wc.state[e];
           found = true;
           break;
         }

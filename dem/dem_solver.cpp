@@ -137,14 +137,15 @@ void DemSolver::particle_pass(const Table& t) {
 
 void DemSolver::event_scan() {
   const auto scan = [&](std::vector<std::uint8_t>& state, std::vector<ContactTally>& tally,
-                        bool wall, auto&& ids, auto&& where) {
+                        const std::vector<ContactRecord>& record, bool wall, auto&& ids,
+                        auto&& where) {
     for (std::size_t k = 0; k < state.size(); ++k) {
       const std::uint8_t st = state[k];
       if (!(st & (kStarted | kEnded))) continue;
-      if (st & kStarted) stats_.on_start(wall, tally[k].vn_impact, tally[k].vt_impact);
+      if (st & kStarted) stats_.on_start(wall, record[k].vn_impact, record[k].vt_impact);
       if (st & kEnded) {
         const auto [a, b] = ids(k);
-        stats_.on_end(tally[k], t_, a, b, where(k));
+        stats_.on_end(tally[k], record[k], t_, a, b, where(k));
         stiffness_closed_ += tally[k].e_stiffness;
         const double u = tally[k].u_elastic;
         tally[k] = ContactTally{};
@@ -154,13 +155,13 @@ void DemSolver::event_scan() {
     }
   };
   scan(
-      pairs_.state, pairs_.tally, false,
+      pairs_.state, pairs_.tally, pairs_.record, false,
       [&](std::size_t k) {
         return std::pair{p_.id[pairs_.i[k]], p_.id[pairs_.j[k]]};
       },
       [&](std::size_t k) { return Vec3(0.5 * (p_.x[pairs_.i[k]] + p_.x[pairs_.j[k]])); });
   scan(
-      wc_.state, wc_.tally, true,
+      wc_.state, wc_.tally, wc_.record, true,
       [&](std::size_t k) {
         return std::pair{p_.id[wc_.particle[k]], std::int64_t(-1 - wc_.wall[k])};
       },

@@ -16,6 +16,7 @@ void PairList::resize(std::size_t n) {
   i.resize(n), j.resize(n);
   history.resize(n);
   tally.resize(n);
+  record.resize(n);
   state.resize(n);
   // Reused storage (the rebuild swaps two lists) holds an older list's values: every pair is
   // cleared, on all threads (169 B per pair, a memory-bound pass that a rebuild every few steps
@@ -24,6 +25,7 @@ void PairList::resize(std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) {
     history[k] = ContactHistory{};
     tally[k] = ContactTally{};
+    record[k] = ContactRecord{};
     state[k] = 0;
   }
 }
@@ -220,6 +222,7 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
     if (flip) h.xi = -h.xi, h.theta = -h.theta;
     fresh.history[f] = h;
     fresh.tally[f] = old.tally[k];
+    fresh.record[f] = old.record[k];
     fresh.state[f] = old.state[k];
   }
   struct Beyond {

@@ -44,6 +44,7 @@ struct WallContactList {
   std::vector<std::int32_t> tri;  // triangle of a mesh wall, -1 for analytic walls
   std::vector<ContactHistory> history;
   std::vector<ContactTally> tally;
+  std::vector<ContactRecord> record;
   std::vector<std::uint8_t> state;
   std::vector<Vec3> force;        // on the particle [N]
   std::vector<Vec3> wall_torque;  // on the wall about its torque_origin [N m]
@@ -56,6 +57,7 @@ struct WallContactList {
     particle.resize(n), wall.resize(n), tri.resize(n);
     history.assign(n, ContactHistory{});
     tally.assign(n, ContactTally{});
+    record.assign(n, ContactRecord{});
     state.assign(n, 0);
     force.assign(n, Vec3::Zero());
     wall_torque.assign(n, Vec3::Zero());

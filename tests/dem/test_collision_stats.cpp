@@ -22,10 +22,10 @@ TEST_CASE("collision rows respect the time window and the row budget", "[dem][co
   stats.setup(s, d);
   dem::ContactTally t;
   t.e_normal_damping = 1e-6;
-  t.vn_impact = 0.3;
+  const dem::ContactRecord r{.vn_impact = 0.3};
   for (double time : {0.5, 1.1, 1.2, 1.5, 1.9, 2.5}) {
     stats.on_start(false, 0.3, 0.01);
-    stats.on_end(t, time, 1, 2, Vec3(0.5, 0.5, 0.5));
+    stats.on_end(t, r, time, 1, 2, Vec3(0.5, 0.5, 0.5));
   }
   CHECK(stats.started_pp() == 6);
   CHECK(stats.rows_dropped() == 1);  // 4 ends inside [1, 2], budget 3
