@@ -70,18 +70,24 @@ def frequency_bars(ax, runs):
 def energy_bars(ax, runs):
     x = np.arange(len(runs))
     bottom = np.zeros(len(runs))
+    mass = np.array([num(r, "powder_mass_kg") for r in runs])
+    # The powder mass comes from particles.h5; a folder of kept small outputs has none, and then
+    # every run is shown in joules (a per-kg bar beside a missing one would not compare).
+    per_kg = bool(np.all(np.isfinite(mass)))
+    scale = mass if per_kg else np.ones(len(runs))
     for j, (k, lab) in enumerate(MECHANISMS):
-        mass = np.array([num(r, "powder_mass_kg") for r in runs])
-        v = np.array([num(r, f"dissipated_{k}_J") for r in runs]) / mass
+        v = np.array([num(r, f"dissipated_{k}_J") for r in runs]) / scale
         ax.bar(x, v, 0.6, bottom=bottom, label=lab, color=f"C{j + 4}")
         bottom += np.nan_to_num(v)
     for i, r in enumerate(runs):
-        ax.text(i, bottom[i], f"{num(r, 'dissipation_rate_per_kg_W_per_kg'):.3g} W/kg\n"
-                f"{num(r, 'dissipated_per_collision_J'):.2g} J/coll.", ha="center", va="bottom",
-                fontsize=7)
+        rate = (f"{num(r, 'dissipation_rate_per_kg_W_per_kg'):.3g} W/kg" if per_kg
+                else f"{num(r, 'dissipation_rate_W'):.3g} W")
+        ax.text(i, bottom[i], f"{rate}\n{num(r, 'dissipated_per_collision_J'):.2g} J/coll.",
+                ha="center", va="bottom", fontsize=7)
     ax.set_xticks(x, [r["label"] for r in runs], fontsize=8)
     ax.margins(y=0.2)
-    ax.set_ylabel("dissipated in the window per kg of powder [J/kg]")
+    ax.set_ylabel("dissipated in the window per kg of powder [J/kg]" if per_kg
+                  else "dissipated in the window [J] (no particles.h5: powder mass unknown)")
     ax.set_title("dissipated energy by mechanism", fontsize=10)
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=7)

@@ -233,6 +233,20 @@ int run_jet_mill_study(const StudyOptions& opt) {
     // The step the run took: the preset's, shortened to a whole fraction or multiple of the gas
     // step (box.cpp), 8-35 % below dem.dt for these presets.
     dem_dt[c->name] = conform_dem_step(cfg.section("dem").get("dt", 0.0), f.dt).dem_dt;
+    // A folder of a run's kept small outputs (results/jet_mill/) has no snapshots: its maps, made
+    // by the run's own study from them, stand if they cover this window (from_s and to_s are the
+    // first and last snapshot inside it, a few snapshot intervals at most from its ends).
+    if (!fs::exists(dir + "/particles.h5")) {
+      const auto kept = read_rows(dir + "/mill_summary.csv");
+      const double slack = 0.1 * (to - from);
+      if (!kept.empty() && number(kept.front(), "from_s") >= from - 1e-12 &&
+          number(kept.front(), "from_s") < from + slack &&
+          number(kept.front(), "to_s") <= to + 1e-12 && number(kept.front(), "to_s") > to - slack) {
+        std::cerr << "jet_mill study: " << c->name
+                  << " has no particles.h5; its mill_*.csv maps of the same window are kept\n";
+        continue;
+      }
+    }
     for (const char* m :
          {"speed_map", "wall_profile", "positions", "gas_profile", "gas_midplane", "summary"})
       fs::remove(dir + "/mill_" + m + ".csv");

@@ -113,6 +113,25 @@ TEST_CASE("collision-stats counts and dissipation equal hand counts on a constru
   CHECK(num("dissipated_normal_damping_J") == Approx(pair + wall).epsilon(0.01));
   CHECK(std::abs(num("dissipated_sliding_J")) < 1e-3 * (pair + wall));
   CHECK(num("dissipated_per_collision_J") == Approx((pair + wall) / 2).epsilon(0.01));
+
+  // A folder of a run's kept small outputs (results/) has timeseries.csv but neither
+  // collisions.h5 nor particles.h5: the counts and energies, which come from the time series,
+  // stand (the same hand counts); the impact speeds and the powder mass are unknown, NaN, not 0.
+  std::filesystem::remove(dir + "/collisions.h5");
+  std::filesystem::remove(dir + "/particles.h5");
+  const std::string err = dir + "_coll_err.txt";
+  REQUIRE(std::system(
+              (tool + " " + dir + " --from 0 --to 0.0475 --csv " + csv + " > /dev/null 2> " + err)
+                  .c_str()) == 0);
+  CHECK(lbdem::test::read_text(err).find("no collisions.h5") != std::string::npos);
+  std::filesystem::remove(err);
+  const auto k = first_row(csv);
+  CHECK(std::stod(k.at("collisions_pp")) == 1);
+  CHECK(std::stod(k.at("collisions_pw")) == 1);
+  CHECK(std::stod(k.at("dissipated_J")) == Approx(pair + wall).epsilon(0.01));
+  CHECK(k.at("impact_source") == "none (no collisions.h5)");
+  CHECK(std::isnan(std::stod(k.at("impacts_pp"))));
+  CHECK(std::isnan(std::stod(k.at("powder_mass_kg"))));
   std::filesystem::remove_all(dir);
   std::filesystem::remove(cfg);
   std::filesystem::remove(csv);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -95,12 +96,24 @@ Result analyse(const RunFolder& run, const std::string& label, double from, doub
   r.add("dissipation_rate_per_kg_W_per_kg", total / span / mass);
 
   // Impact speeds: the rows of contacts begun in (ta, tb] where the rows hold every contact of
-  // the window, else the solver's histograms, which run from t = 0 to the file's time.
-  const CollisionFile f = read_collisions(run.dir);
-  const Coverage cov = rows_coverage(f, config_number(run, "output.collisions.rows_start", 0.0),
-                                     config_number(run, "output.collisions.rows_end", kInf));
+  // the window, else the solver's histograms, which run from t = 0 to the file's time. A folder
+  // of a run's kept small outputs may lack collisions.h5: the figures above come from
+  // timeseries.csv and stand; the impact speeds and the grid are then unknown (NaN), not zero.
+  const bool have_file = std::filesystem::is_regular_file(run.dir + "/collisions.h5");
+  if (!have_file)
+    std::fprintf(stderr,
+                 "lbdem-collision-stats: no collisions.h5 in %s: impact speeds and the "
+                 "dissipation grid left empty\n",
+                 run.dir.c_str());
+  const CollisionFile f = have_file ? read_collisions(run.dir) : CollisionFile{};
+  const Coverage cov =
+      have_file ? rows_coverage(f, config_number(run, "output.collisions.rows_start", 0.0),
+                                config_number(run, "output.collisions.rows_end", kInf))
+                : Coverage{};
   double pw_share = kNaN;
-  if (cov.covers(ta, tb)) {
+  if (!have_file) {
+    r.source = "none (no collisions.h5)";
+  } else if (cov.covers(ta, tb)) {
     r.source = "rows";
     std::vector<double> vn[2], vt[2];
     double diss[2] = {0, 0};
@@ -123,7 +136,7 @@ Result analyse(const RunFolder& run, const std::string& label, double from, doub
   r.add("dissipated_pw_share_rows", pw_share);
   for (int p = 0; p < 2; ++p) {
     const std::string k = kPairs[p];
-    r.add("impacts_" + k, r.vn[p].total());
+    r.add("impacts_" + k, have_file ? r.vn[p].total() : kNaN);
     r.add("impact_vn_" + k + "_median_m_per_s", histogram_quantile(r.vn[p], 0.5));
     r.add("impact_vn_" + k + "_p95_m_per_s", histogram_quantile(r.vn[p], 0.95));
     r.add("impact_vt_" + k + "_median_m_per_s", histogram_quantile(r.vt[p], 0.5));
@@ -132,7 +145,7 @@ Result analyse(const RunFolder& run, const std::string& label, double from, doub
   const GridSummary g = f.has_grid
                             ? summarise_grid(f.grid_dissipated, f.nz, f.ny, f.nx, f.lo[2], f.hi[2])
                             : GridSummary{kNaN, kNaN, kNaN};
-  r.add("grid_time_s", f.time);
+  r.add("grid_time_s", have_file ? f.time : kNaN);
   r.add("grid_dissipated_J", g.total);
   r.add("grid_top_decile_share", g.top_decile);
   r.add("grid_z_centroid_m", g.z_centroid);
