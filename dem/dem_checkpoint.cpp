@@ -31,6 +31,8 @@ std::vector<T> unflatten(const std::vector<double>& d) {
 // split in memory, so that checkpoints of either build resume in the other.
 std::vector<double> flatten(const std::vector<ContactTally>& t,
                             const std::vector<ContactRecord>& r) {
+  if (t.size() != r.size())
+    throw std::logic_error("contact tally and record arrays differ in length");
   std::vector<double> out(t.size() * (kTallyWidth + kRecordWidth));
   for (std::size_t k = 0; k < t.size(); ++k) {
     std::memcpy(&out[k * (kTallyWidth + kRecordWidth)], &t[k], sizeof(ContactTally));

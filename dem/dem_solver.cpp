@@ -137,8 +137,7 @@ void DemSolver::particle_pass(const Table& t) {
 
 void DemSolver::event_scan() {
   const auto scan = [&](std::vector<std::uint8_t>& state, std::vector<ContactTally>& tally,
-                        const std::vector<ContactRecord>& record, bool wall, auto&& ids,
-                        auto&& where) {
+                        std::vector<ContactRecord>& record, bool wall, auto&& ids, auto&& where) {
     for (std::size_t k = 0; k < state.size(); ++k) {
       const std::uint8_t st = state[k];
       if (!(st & (kStarted | kEnded))) continue;
@@ -150,6 +149,7 @@ void DemSolver::event_scan() {
         const double u = tally[k].u_elastic;
         tally[k] = ContactTally{};
         tally[k].u_elastic = u;  // cohesion may still hold energy after the touch ends
+        record[k] = ContactRecord{};
       }
       state[k] = st & (kInteracting | kTouching);
     }

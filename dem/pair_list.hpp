@@ -12,9 +12,9 @@ namespace lbdem::dem {
 
 /// Accounting of the contact a pair is in now, the fields every step of a touch updates: energies
 /// dissipated since it began [J] and the powers of the last step [W] (trapezoidal integration).
-/// Eight doubles on one cache line; the impact record, written at first touch and read when the
-/// contact ends, lives apart (ContactRecord) so that the pair pass streams 64 B per contact here
-/// instead of 104 (session 25 measured the 40 B at about 5 % of the bench bed's step).
+/// Eight doubles on one cache line; the impact record lives apart (ContactRecord), so the pair pass
+/// moves 64 B of tally per contact instead of 104 (session 25 estimated the 40 B at about 5 % of
+/// the bench bed's step on a busy AMD VM; session 26 measured +0.7 % on a Xeon, README).
 struct alignas(64) ContactTally {
   double e_normal_damping = 0, e_tangential_damping = 0;
   double p_normal_damping = 0, p_tangential_damping = 0;
@@ -27,7 +27,9 @@ struct alignas(64) ContactTally {
   }
 };
 
-/// Impact record of the contact a pair is in now, for the statistics and the opt-in rows.
+/// Impact record of the contact a pair is in now, for the statistics and the opt-in rows: written
+/// at first touch (and each touching step while rows are on: the extremes), read at the start and
+/// the end of the touch.
 struct ContactRecord {
   double t_start = 0;      // [s]
   double vn_impact = 0;    // normal approach speed at first touch [m/s]
@@ -56,9 +58,9 @@ struct PairList {
   std::vector<Vec3> j_force, j_torque;
 
   std::size_t size() const { return i.size(); }
-  /// n pairs with zeroed springs, tallies and states (i and j keep whatever they held: the caller
-  /// writes them); the j side is sized by build_transpose. build_pairs resets every field, so a
-  /// list may be rebuilt in the storage of an older one: a new field must be reset there too.
+  /// n pairs with zeroed springs, tallies, records and states (i and j keep whatever they held: the
+  /// caller writes them); the j side is sized by build_transpose. build_pairs resets every field,
+  /// so a list may be rebuilt in the storage of an older one: a new field must be reset there too.
   void resize(std::size_t n);
   /// Builds jfirst/jslot from (i, j) for n_particles particles (stable: ascending pair index) and
   /// zeroes the j-side loads.

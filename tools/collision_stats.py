@@ -6,7 +6,8 @@ usage: /usr/bin/python3 tools/collision_stats.py OUT.csv [--png FILE]
 Reads OUT.csv and OUT_impact_speed.csv (written by lbdem-collision-stats --csv OUT.csv) and, for
 the maps, each run's collisions.h5 /grid (the run_dir column). Writes OUT.png with, per run:
 collision frequencies per parcel and per represented original particle (particle-particle and
-particle-wall), dissipated energy per kg of powder by mechanism over the window, the normal
+particle-wall), dissipated energy per kg of powder by mechanism over the window (in J for all
+runs when any run's powder mass is unknown, i.e. it has no particles.h5), the normal
 impact-speed distributions (from the per-contact rows where they cover the window, else from the
 whole-run histograms: the legend says which), and a side view (x-z, summed over y) of where the
 energy was dissipated over the whole run. Exit 0 on success, 2 on missing or unreadable input.

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/config.hpp"
@@ -221,6 +222,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
                         "kinetic_energy_table.txt", "study.csv"})
     fs::remove(root + "/" + f);
   std::map<std::string, double> dem_dt;
+  std::set<std::string> no_maps;  // cases whose mill_summary.csv is not of this window
   double chamber_radius = 0;
   for (const Case* c : present) {
     const std::string dir = root + "/" + c->name;
@@ -233,19 +235,30 @@ int run_jet_mill_study(const StudyOptions& opt) {
     // The step the run took: the preset's, shortened to a whole fraction or multiple of the gas
     // step (box.cpp), 8-35 % below dem.dt for these presets.
     dem_dt[c->name] = conform_dem_step(cfg.section("dem").get("dt", 0.0), f.dt).dem_dt;
-    // A folder of a run's kept small outputs (results/jet_mill/) has no snapshots: its maps, made
-    // by the run's own study from them, stand if they cover this window (from_s and to_s are the
-    // first and last snapshot inside it, a few snapshot intervals at most from its ends).
+    // A folder of a run's kept small outputs (results/jet_mill/) has no snapshots, and its maps,
+    // made by the run's own study from them, are the only copy: they are never removed. They stand
+    // for this window if their first snapshot lies within one snapshot interval after its start
+    // and their last within 1.5 intervals and a row interval before its (padded) end (the run may
+    // stop just before the next snapshot, and snapshots fall on whole steps, a little late).
     if (!fs::exists(dir + "/particles.h5")) {
       const auto kept = read_rows(dir + "/mill_summary.csv");
-      const double slack = 0.1 * (to - from);
-      if (!kept.empty() && number(kept.front(), "from_s") >= from - 1e-12 &&
-          number(kept.front(), "from_s") < from + slack &&
-          number(kept.front(), "to_s") <= to + 1e-12 && number(kept.front(), "to_s") > to - slack) {
+      const OutputSettings out = OutputSettings::from(cfg.section("run"), cfg.section("output"));
+      const double tol = 1e-8 * std::max(std::abs(from), std::abs(to));
+      const double a = kept.empty() ? std::nan("") : number(kept.front(), "from_s");
+      const double b = kept.empty() ? std::nan("") : number(kept.front(), "to_s");
+      const bool covers = a >= from - tol && a <= from + out.snapshot_interval + tol &&
+                          b <= to + tol &&
+                          b >= to - 1.5 * out.snapshot_interval - out.interval - tol;
+      if (covers)
         std::cerr << "jet_mill study: " << c->name
                   << " has no particles.h5; its mill_*.csv maps of the same window are kept\n";
-        continue;
+      else {
+        std::cerr << "jet_mill study: " << c->name
+                  << " has no particles.h5 and no mill_*.csv maps of this window (they are left "
+                     "as they are): its speed columns stay empty\n";
+        no_maps.insert(c->name);
       }
+      continue;
     }
     for (const char* m :
          {"speed_map", "wall_profile", "positions", "gas_profile", "gas_midplane", "summary"})
@@ -304,7 +317,9 @@ int run_jet_mill_study(const StudyOptions& opt) {
   constexpr std::size_t kCompared = 6;
   std::map<std::string, std::array<double, kCompared>> figures;
   for (const Case* c : present) {
-    const auto maps = read_rows(root + "/" + c->name + "/mill_summary.csv");
+    const auto maps = no_maps.count(c->name)
+                          ? std::vector<std::map<std::string, std::string>>{}
+                          : read_rows(root + "/" + c->name + "/mill_summary.csv");
     const auto* cr = row_of(coll, c->name);
     const auto* kr = row_of(ke, c->name);
     const auto get = [](const std::map<std::string, std::string>* r, const char* k) {
@@ -339,7 +354,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
     const std::string dir = root + "/" + c->name;
     const auto [removed, parcels] =
         last_and_max(dir + "/timeseries.csv", "mass_removed_kg", "particles");
-    const auto maps = read_rows(dir + "/mill_summary.csv");
+    const auto maps = no_maps.count(c->name) ? std::vector<std::map<std::string, std::string>>{}
+                                             : read_rows(dir + "/mill_summary.csv");
     const auto* cr = row_of(coll, c->name);
     const auto* kr = row_of(ke, c->name);
     const auto get = [](const std::map<std::string, std::string>* r, const char* k) {

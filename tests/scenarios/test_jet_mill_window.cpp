@@ -6,7 +6,12 @@
 // 0.13 s exactly would leave nothing to drop: keep a run here whose last row lies past its end.)
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
 #include "core/config.hpp"
+#include "helpers/cli.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/jet_mill/jet_mill_study.hpp"
 #include "tools/src/run_folder.hpp"
@@ -41,4 +46,46 @@ TEST_CASE("the jet mill study's window takes a run's first row from 0.07 s and i
   REQUIRE(t.back() > 0.13);
   // The window the tools were given before (no pad) dropped it: the test can fail.
   CHECK(select_window(t, w.from, 0.13).end == t.size() - 1);
+}
+
+// `study jet_mill --no-run` on a folder of kept small outputs (no particles.h5, no snapshots):
+// cg4_p5bar as results/ keeps it. Its mill_*.csv maps are the only copy: they must survive, and
+// the table takes its speeds from them when they cover the window, else leaves them empty.
+TEST_CASE("the jet mill study rebuilds its table from kept outputs without removing their maps",
+          "[scenarios]") {
+  namespace fs = std::filesystem;
+  const std::string src = std::string(LBDEM_SOURCE_DIR) + "/results/jet_mill/cg4_p5bar";
+  const std::string root = lbdem::test::tmpdir("mill_kept"), dir = root + "/cg4_p5bar";
+  fs::create_directories(root);
+  fs::copy(src, dir, fs::copy_options::recursive);
+  REQUIRE(!fs::exists(dir + "/particles.h5"));
+  const auto kept = read_csv(dir + "/mill_summary.csv");
+  const double speed = kept.column("mean_speed_m_per_s").at(0);
+  const auto study = [&] {
+    return lbdem::test::cli("study jet_mill --no-run --cases cg4_p5bar --out " + root);
+  };
+  auto r = study();
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("maps of the same window are kept") != std::string::npos);
+  CHECK(fs::exists(dir + "/mill_speed_map.csv"));
+  const auto table = read_csv(root + "/study.csv");
+  CHECK(table.column("mean_speed_m_per_s").at(0) == Approx(speed).epsilon(1e-3));  // 4 digits
+  // The collision figures come from timeseries.csv and collisions.h5 (kept): present.
+  CHECK(table.column("freq_pp_per_original_per_s").at(0) > 0);
+
+  // Maps of another window (the summary's first snapshot moved 10 ms early): kept, not used.
+  std::string text = lbdem::test::read_text(dir + "/mill_summary.csv");
+  const auto at = text.find(",0.100069444,");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 13, ",0.090069444,");
+  std::ofstream(dir + "/mill_summary.csv") << text;
+  r = study();
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("no mill_*.csv maps of this window") != std::string::npos);
+  CHECK(fs::exists(dir + "/mill_speed_map.csv"));
+  CHECK(lbdem::test::read_text(dir + "/mill_summary.csv") == text);
+  CHECK(std::isnan(read_csv(root + "/study.csv").column("mean_speed_m_per_s").at(0)));
+  fs::remove_all(root);
 }

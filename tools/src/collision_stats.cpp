@@ -213,7 +213,9 @@ int main(int argc, char** argv) {
       "when they hold every contact of the window (set output.collisions.rows_start/rows_end "
       "around it), else from its /histograms, which, like /grid (the spatial map), cover the "
       "whole run. The powder mass for J/kg is that of the latest snapshot up to the window end. "
-      "Rows miss the contacts still open at the end of the run.\n"
+      "Rows miss the contacts still open at the end of the run. A folder without collisions.h5 "
+      "(a run's kept small outputs) still gives the counts, frequencies and energies; its impact "
+      "speeds and grid are NaN, and so is the mass without particles.h5.\n"
       "Writes --csv OUT.csv (one row per run) and OUT_impact_speed.csv; plot them with "
       "/usr/bin/python3 tools/collision_stats.py OUT.csv"};
   Options o;
