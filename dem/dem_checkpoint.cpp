@@ -10,10 +10,10 @@ namespace lbdem::dem {
 
 namespace {
 // All are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
+constexpr std::size_t kTallyWidth = 8, kRow = 13;  // a checkpoint row: the tally, then the record
 static_assert(sizeof(ContactHistory) == 8 * sizeof(double) &&
-              sizeof(ContactTally) == 8 * sizeof(double) &&
-              sizeof(ContactRecord) == 5 * sizeof(double));
-constexpr std::size_t kTallyWidth = 8, kRecordWidth = 5;
+              sizeof(ContactTally) == kTallyWidth * sizeof(double) &&
+              sizeof(ContactTally) + sizeof(ContactRecord) == kRow * sizeof(double));
 
 template <class T>
 std::vector<double> flatten(const std::vector<T>& v) {
@@ -33,22 +33,20 @@ std::vector<double> flatten(const std::vector<ContactTally>& t,
                             const std::vector<ContactRecord>& r) {
   if (t.size() != r.size())
     throw std::logic_error("contact tally and record arrays differ in length");
-  std::vector<double> out(t.size() * (kTallyWidth + kRecordWidth));
+  std::vector<double> out(t.size() * kRow);
   for (std::size_t k = 0; k < t.size(); ++k) {
-    std::memcpy(&out[k * (kTallyWidth + kRecordWidth)], &t[k], sizeof(ContactTally));
-    std::memcpy(&out[k * (kTallyWidth + kRecordWidth) + kTallyWidth], &r[k], sizeof(ContactRecord));
+    std::memcpy(&out[k * kRow], &t[k], sizeof(ContactTally));
+    std::memcpy(&out[k * kRow + kTallyWidth], &r[k], sizeof(ContactRecord));
   }
   return out;
 }
 void unflatten(const std::vector<double>& d, std::vector<ContactTally>& t,
                std::vector<ContactRecord>& r) {
-  const std::size_t n = d.size() / (kTallyWidth + kRecordWidth);
+  const std::size_t n = d.size() / kRow;
   t.assign(n, {}), r.assign(n, {});
   for (std::size_t k = 0; k < n; ++k) {
-    std::memcpy(static_cast<void*>(&t[k]), &d[k * (kTallyWidth + kRecordWidth)],
-                sizeof(ContactTally));
-    std::memcpy(static_cast<void*>(&r[k]), &d[k * (kTallyWidth + kRecordWidth) + kTallyWidth],
-                sizeof(ContactRecord));
+    std::memcpy(static_cast<void*>(&t[k]), &d[k * kRow], sizeof(ContactTally));
+    std::memcpy(static_cast<void*>(&r[k]), &d[k * kRow + kTallyWidth], sizeof(ContactRecord));
   }
 }
 template <class A, class B>
