@@ -7,7 +7,8 @@ Reads OUT.csv and OUT_impact_speed.csv (written by lbdem-collision-stats --csv O
 the maps, each run's collisions.h5 /grid (the run_dir column). Writes OUT.png with, per run:
 collision frequencies per parcel and per represented original particle (particle-particle and
 particle-wall), dissipated energy per kg of powder by mechanism over the window (in J for all
-runs when any run's powder mass is unknown, i.e. it has no particles.h5), the normal
+runs when any run's powder mass is unknown: no particles.h5 and a run that did not start
+empty, so that its inflow ledger does not give the mass either), the normal
 impact-speed distributions (from the per-contact rows where they cover the window, else from the
 whole-run histograms: the legend says which), and a side view (x-z, summed over y) of where the
 energy was dissipated over the whole run. Exit 0 on success, 2 on missing or unreadable input.
@@ -72,8 +73,9 @@ def energy_bars(ax, runs):
     x = np.arange(len(runs))
     bottom = np.zeros(len(runs))
     mass = np.array([num(r, "powder_mass_kg") for r in runs])
-    # The powder mass comes from particles.h5; a folder of kept small outputs has none, and then
-    # every run is shown in joules (a per-kg bar beside a missing one would not compare).
+    # The powder mass comes from particles.h5, else from the inflow ledger of a run that started
+    # empty; where neither gives it, every run is shown in joules (a per-kg bar beside a missing
+    # one would not compare).
     per_kg = bool(np.all(np.isfinite(mass)))
     scale = mass if per_kg else np.ones(len(runs))
     for j, (k, lab) in enumerate(MECHANISMS):
@@ -88,7 +90,7 @@ def energy_bars(ax, runs):
     ax.set_xticks(x, [r["label"] for r in runs], fontsize=8)
     ax.margins(y=0.2)
     ax.set_ylabel("dissipated in the window per kg of powder [J/kg]" if per_kg
-                  else "dissipated in the window [J] (no particles.h5: powder mass unknown)")
+                  else "dissipated in the window [J] (a powder mass is unknown)")
     ax.set_title("dissipated energy by mechanism", fontsize=10)
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=7)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The jet mill study's figures (Scott, Borissova, Di Renzo & Ghadiri, Figs. 2-6) across cases.
 
-usage: /usr/bin/python3 tools/jet_mill_figures.py STUDY_DIR --from T0 --to T1 --offset T_SPIN CASE...
+usage: /usr/bin/python3 tools/jet_mill_figures.py STUDY_DIR --from T0 --to T1 --offset T_SPIN
+       [--radius R] [--no-maps CASE]... CASE...
 
 Reads, for each CASE, STUDY_DIR/CASE/timeseries.csv and the CSVs of lbdem-jet-mill-maps
 (STUDY_DIR/CASE/mill_*.csv). Writes into STUDY_DIR: positions.png (particles seen from above at
@@ -11,7 +12,10 @@ the window's end, Fig. 2), speed_map.png (mean particle speed on x-y bins over t
 radial one as cell means and as the link-counted flux per cylinder area, mill_gas_radial_flow.csv),
 kinetic_energy.png (total particle kinetic energy against study time, Fig. 5), wall_profile.png
 (mean particle speed against distance from the outer wall over the window, Fig. 6). Study time is
-run time less T_SPIN (the gas spin-up). Exit 0 on success, 2 on missing input.
+run time less T_SPIN (the gas spin-up). A case named by --no-maps CASE (repeatable) has maps of
+another window (a folder of kept outputs whose snapshots are gone): its panels of Figs. 2-4 and 6
+and its gas profiles stay empty, titled so, and only its kinetic energy is drawn. Exit 0 on
+success, 2 on missing input.
 """
 import argparse
 import csv
@@ -94,20 +98,33 @@ def main():
     ap.add_argument("--to", dest="t1", type=float, required=True)
     ap.add_argument("--offset", type=float, default=0.0)
     ap.add_argument("--radius", type=float, default=0.025, help="chamber radius [m]")
+    ap.add_argument("--no-maps", action="append", default=[], metavar="CASE",
+                    help="a case whose mill_*.csv maps are not of this window: not drawn")
     a = ap.parse_args()
     root, cases = a.root, a.cases
     if not os.path.isdir(root):
         fail(f"no folder {root}")
+    for c in a.no_maps:
+        if c not in cases:
+            fail(f"--no-maps {c}: not one of the cases ({', '.join(cases)})")
+    stale = set(a.no_maps)
+
+    def maps(c, name):
+        # Another window's maps would pass for this one's beside the other cases: left out.
+        return {} if c in stale else columns(os.path.join(root, c, name))
+
+    def title(c, text=None):
+        return f"{c}: maps of another window, not drawn" if c in stale else (text or c)
     win = f"study time {a.t0 - a.offset:.3g}-{a.t1 - a.offset:.3g} s"
 
     fig, axes = panels(len(cases))
     for ax, c in zip(axes, cases):
-        p = columns(os.path.join(root, c, "mill_positions.csv"))
+        p = maps(c, "mill_positions.csv")
         if p:
             ax.scatter(1e3 * p["x_m"], 1e3 * p["y_m"], s=0.2, c=p["speed_m_per_s"], cmap="viridis",
                        vmin=0, vmax=30, rasterized=True)
         chamber(ax, a.radius)
-        ax.set_title(f"{c}: {len(p.get('x_m', []))} parcels", fontsize=9)
+        ax.set_title(title(c, f"{c}: {len(p.get('x_m', []))} parcels"), fontsize=9)
     fig.suptitle(f"Particles seen from above at study time {a.t1 - a.offset:.3g} s (colour: speed 0-30 m/s)")
     fig.tight_layout()
     save(fig, os.path.join(root, "positions.png"))
@@ -115,12 +132,12 @@ def main():
     fig, axes = panels(len(cases))
     im = None
     for ax, c in zip(axes, cases):
-        m = columns(os.path.join(root, c, "mill_speed_map.csv"))
+        m = maps(c, "mill_speed_map.csv")
         if m:
             ext, arr = grid(m["x_m"], m["y_m"], m["mean_speed_m_per_s"])
             im = ax.imshow(arr, origin="lower", extent=ext, vmin=0, vmax=30, cmap="jet")
         chamber(ax, a.radius)
-        ax.set_title(c, fontsize=9)
+        ax.set_title(title(c), fontsize=9)
     if im is not None:
         fig.colorbar(im, ax=list(axes[:len(cases)]), label="mean particle speed [m/s]", shrink=0.8)
     fig.suptitle(f"Mean particle speed, {win}")
@@ -130,12 +147,12 @@ def main():
     im = None
     for ax, c in zip(axes, cases):
         path = os.path.join(root, c, "mill_gas_midplane.csv")
-        if os.path.isfile(path) or os.path.isfile(path + ".gz"):
+        if c not in stale and (os.path.isfile(path) or os.path.isfile(path + ".gz")):
             g = columns(path)
             ext, arr = grid(g["x_m"], g["y_m"], np.minimum(g["speed_m_per_s"], 120))
             im = ax.imshow(arr, origin="lower", extent=ext, vmin=0, vmax=120, cmap="jet")
         chamber(ax, a.radius)
-        ax.set_title(c, fontsize=9)
+        ax.set_title(title(c), fontsize=9)
     if im is not None:
         fig.colorbar(im, ax=list(axes[:len(cases)]), label="gas speed [m/s] (capped at 120)",
                      shrink=0.8)
@@ -144,6 +161,8 @@ def main():
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     for i, c in enumerate(cases):
+        if c in stale:
+            continue
         path = os.path.join(root, c, "mill_gas_profile.csv")
         if os.path.isfile(path) or os.path.isfile(path + ".gz"):
             g = columns(path)
@@ -181,7 +200,7 @@ def main():
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for i, c in enumerate(cases):
-        w = columns(os.path.join(root, c, "mill_wall_profile.csv"))
+        w = maps(c, "mill_wall_profile.csv")
         if w:
             ax.plot(1e3 * w["wall_distance_m"], w["mean_speed_m_per_s"], "o-", ms=3,
                     color=f"C{i}", label=c)

@@ -255,7 +255,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
       else {
         std::cerr << "jet_mill study: " << c->name
                   << " has no particles.h5 and no mill_*.csv maps of this window (they are left "
-                     "as they are): its speed columns stay empty\n";
+                     "as they are): its speed columns stay empty and the map figures leave it "
+                     "out\n";
         no_maps.insert(c->name);
       }
       continue;
@@ -288,6 +289,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
                        quoted(root) + " --from " + fmt(from, "%.17g") + " --to " +
                        fmt(end, "%.17g") + " --offset " + fmt(spin_up, "%.17g") + " --radius " +
                        fmt(chamber_radius, "%.17g");
+    for (const std::string& name : no_maps) plot += " --no-maps " + name;
     for (const Case* c : present) plot += " " + c->name;
     if (system_ok(plot + " > /dev/null", "tools/jet_mill_figures.py") == 0)
       std::cout << "figures: " << fs::absolute(root).string() << "/*.png\n";

@@ -116,7 +116,8 @@ TEST_CASE("collision-stats counts and dissipation equal hand counts on a constru
 
   // A folder of a run's kept small outputs (results/) has timeseries.csv but neither
   // collisions.h5 nor particles.h5: the counts and energies, which come from the time series,
-  // stand (the same hand counts); the impact speeds and the powder mass are unknown, NaN, not 0.
+  // stand (the same hand counts); the impact speeds and the powder mass are unknown, NaN, not 0
+  // (its three particles were placed, not fed, so the inflow ledger does not give the mass).
   std::filesystem::remove(dir + "/collisions.h5");
   std::filesystem::remove(dir + "/particles.h5");
   const std::string err = dir + "_coll_err.txt";

@@ -43,3 +43,26 @@ TEST_CASE("Missing folder or series is a ToolError", "[tools]") {
   CHECK_THROWS_AS(RunFolder::open(d.string()), ToolError);  // no timeseries.csv
   fs::remove_all(d);
 }
+
+// The inflow ledger as the powder mass of a folder without snapshots: inserted less removed at
+// the last row at or before t, for a run that starts empty. Exact: one subtraction of the
+// numbers in the file (the values are chosen so that it is exact in binary too).
+TEST_CASE("ledger_mass: inserted less removed for a run that starts empty, else NaN", "[tools]") {
+  const fs::path d = fresh_dir("ledger");
+  const auto open = [&](const std::string& rows) {
+    std::ofstream(d / "timeseries.csv", std::ios::trunc)
+        << "time_s,particles,mass_removed_kg,mass_inserted_kg\n"
+        << rows;
+    return RunFolder::open(d.string());
+  };
+  const RunFolder fed = open("0,0,0,0\n0.5,10,0,0.75\n1,12,0.25,1\n");
+  CHECK(ledger_mass(fed, 1) == 0.75);
+  CHECK(ledger_mass(fed, 0.9) == 0.75);  // the row at 0.5 s
+  CHECK(ledger_mass(fed, 0) == 0);
+  CHECK(std::isnan(ledger_mass(fed, -1)));  // before the first row
+  // Particles at the start came from a fill, which the ledger does not count.
+  CHECK(std::isnan(ledger_mass(open("0,5,0,0\n1,12,0.25,1\n"), 1)));
+  std::ofstream(d / "timeseries.csv", std::ios::trunc) << "time_s,particles\n0,0\n1,3\n";
+  CHECK(std::isnan(ledger_mass(RunFolder::open(d.string()), 1)));  // no inflow columns
+  fs::remove_all(d);
+}

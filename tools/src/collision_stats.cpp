@@ -80,7 +80,10 @@ Result analyse(const RunFolder& run, const std::string& label, double from, doub
     r.add("freq_" + k + "_per_parcel_per_s", fp);
     r.add("freq_" + k + "_per_original_per_s", per_original_frequency(fp, l));
   }
-  const double mass = snapshot_mass(run, tb);
+  // A folder of kept small outputs has no snapshots: a run that started empty then has its
+  // powder mass from the inflow's ledger in timeseries.csv.
+  double mass = snapshot_mass(run, tb);
+  if (std::isnan(mass)) mass = ledger_mass(run, tb);
   r.add("powder_mass_kg", mass);
   double total = 0;
   for (const char* m : kMechanisms) {
@@ -215,7 +218,9 @@ int main(int argc, char** argv) {
       "whole run. The powder mass for J/kg is that of the latest snapshot up to the window end. "
       "Rows miss the contacts still open at the end of the run. A folder without collisions.h5 "
       "(a run's kept small outputs) still gives the counts, frequencies and energies; its impact "
-      "speeds and grid are NaN, and so is the mass without particles.h5.\n"
+      "speeds and grid are NaN. Without particles.h5 the mass is mass_inserted_kg - "
+      "mass_removed_kg of "
+      "timeseries.csv for a run that began with no particles, else NaN.\n"
       "Writes --csv OUT.csv (one row per run) and OUT_impact_speed.csv; plot them with "
       "/usr/bin/python3 tools/collision_stats.py OUT.csv"};
   Options o;

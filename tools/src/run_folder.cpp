@@ -188,4 +188,17 @@ double snapshot_mass(const RunFolder& run, double t) {
   return mass;
 }
 
+double ledger_mass(const RunFolder& run, double t) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const Table& s = run.series;
+  if (s.rows() == 0 || !s.has("particles") || !s.has("mass_inserted_kg") ||
+      !s.has("mass_removed_kg") || s.column("particles").front() != 0)
+    return kNaN;
+  const auto& time = run.time();
+  const auto after = std::upper_bound(time.begin(), time.end(), t);
+  if (after == time.begin()) return kNaN;
+  const std::size_t k = std::size_t(after - time.begin()) - 1;
+  return s.column("mass_inserted_kg")[k] - s.column("mass_removed_kg")[k];
+}
+
 }  // namespace lbdem::tools

@@ -74,6 +74,12 @@ double config_number(const RunFolder& run, std::string_view dotted_key, double d
 /// later), as Σ 4/3 π r³ ρ(material); NaN if the run has no snapshots or no densities.
 double snapshot_mass(const RunFolder& run, double t);
 
+/// Mass of the particles [kg] at the last row of timeseries.csv at or before t, from the run's
+/// own ledger: mass_inserted_kg - mass_removed_kg. Only for a run that starts empty (particles = 0
+/// in its first row), whose every particle came in through the inflow; NaN otherwise, or without
+/// those columns. It stands in for snapshot_mass in a folder of kept small outputs (no snapshots).
+double ledger_mass(const RunFolder& run, double t);
+
 /// Runs body() and maps ToolError to one line "tool: message" on stderr with kToolErrorExit, any
 /// other exception to "tool: failed: message" with exit 1.
 template <class Body>
