@@ -13,8 +13,9 @@ radial one as cell means and as the link-counted flux per cylinder area, mill_ga
 kinetic_energy.png (total particle kinetic energy against study time, Fig. 5), wall_profile.png
 (mean particle speed against distance from the outer wall over the window, Fig. 6). Study time is
 run time less T_SPIN (the gas spin-up). A case named by --no-maps CASE (repeatable) has maps of
-another window (a folder of kept outputs whose snapshots are gone): its panels of Figs. 2-4 and 6
-and its gas profiles stay empty, titled so, and only its kinetic energy is drawn. Exit 0 on
+another window (a folder of kept outputs whose snapshots are gone): its panels of Figs. 2-4 stay
+empty and say so, it is left out of the gas profiles and Fig. 6 (their titles name it), and only
+its kinetic energy is drawn. Exit 0 on
 success, 2 on missing input.
 """
 import argparse
@@ -174,6 +175,8 @@ def main():
             q = columns(path)
             ax2.plot(1e3 * q["radius_m"], q["u_r_m_per_s"], color=f"C{i}",
                      label=f"{c}, link flux / (2 pi r H rho)")
+    if stale:
+        ax1.set_title(f"maps of another window, not drawn: {', '.join(sorted(stale))}", fontsize=8)
     ax1.set_ylabel("gas tangential velocity [m/s]")
     ax2.set_ylabel("gas radial velocity [m/s] (outwards +)")
     for ax in (ax1, ax2):
@@ -206,7 +209,8 @@ def main():
                     color=f"C{i}", label=c)
     ax.set_xlabel("distance from the outer wall [mm]")
     ax.set_ylabel("mean particle speed [m/s]")
-    ax.set_title(f"Mean particle speed against distance from the wall, {win}")
+    note = f"\n(maps of another window, not drawn: {', '.join(sorted(stale))})" if stale else ""
+    ax.set_title(f"Mean particle speed against distance from the wall, {win}{note}")
     ax.legend(fontsize=8)
     fig.tight_layout()
     save(fig, os.path.join(root, "wall_profile.png"))

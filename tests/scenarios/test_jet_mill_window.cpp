@@ -113,10 +113,13 @@ TEST_CASE("the jet mill figures leave out the maps of a case named by --no-maps"
     fs::remove(f + ".gz");
     std::ofstream(f, std::ios::trunc) << "x_m,y_m,radius_m,speed_m_per_s\nnope,nope,nope,nope\n";
   }
+  const std::string err = root + "/stderr.txt";
+  const auto q = [](const std::string& s) { return "'" + s + "'"; };
   const auto figures = [&](const std::string& extra) {
-    const std::string cmd = python + " " + LBDEM_SOURCE_DIR + "/tools/jet_mill_figures.py " + root +
-                            " --from 0.1 --to 0.13 --offset 0.03" + extra +
-                            " kept stale > /dev/null 2>&1";
+    const std::string cmd = q(python) + " " +
+                            q(std::string(LBDEM_SOURCE_DIR) + "/tools/jet_mill_figures.py") + " " +
+                            q(root) + " --from 0.1 --to 0.13 --offset 0.03" + extra +
+                            " kept stale > /dev/null 2> " + q(err);
     const int rc = std::system(cmd.c_str());
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
   };
@@ -125,6 +128,8 @@ TEST_CASE("the jet mill figures leave out the maps of a case named by --no-maps"
        {"positions", "speed_map", "gas_midplane", "gas_profiles", "kinetic_energy", "wall_profile"})
     CHECK(fs::exists(root + "/" + png + ".png"));
   CHECK(figures("") != 0);                // the unreadable maps, read: the test can fail
-  CHECK(figures(" --no-maps cg1") == 2);  // not one of the cases
+  CHECK(figures(" --no-maps cg1") == 2);  // not one of the cases, and said so:
+  CHECK(lbdem::test::read_text(err).find("--no-maps cg1: not one of the cases") !=
+        std::string::npos);
   fs::remove_all(root);
 }

@@ -55,10 +55,10 @@ TEST_CASE("ledger_mass: inserted less removed for a run that starts empty, else 
         << rows;
     return RunFolder::open(d.string());
   };
-  const RunFolder fed = open("0,0,0,0\n0.5,10,0,0.75\n1,12,0.25,1\n");
+  const RunFolder fed = open("0,0,0,0\n0.5,10,0,0.5\n1,12,0.25,1\n");
   CHECK(ledger_mass(fed, 1) == 0.75);
-  CHECK(ledger_mass(fed, 0.9) == 0.75);  // the row at 0.5 s
-  CHECK(ledger_mass(fed, 0) == 0);
+  CHECK(ledger_mass(fed, 0.9) == 0.5);      // the row at 0.5 s, not the next one
+  CHECK(std::isnan(ledger_mass(fed, 0)));   // nothing in yet: no mass to divide by
   CHECK(std::isnan(ledger_mass(fed, -1)));  // before the first row
   // Particles at the start came from a fill, which the ledger does not count.
   CHECK(std::isnan(ledger_mass(open("0,5,0,0\n1,12,0.25,1\n"), 1)));

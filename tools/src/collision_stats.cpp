@@ -218,9 +218,8 @@ int main(int argc, char** argv) {
       "whole run. The powder mass for J/kg is that of the latest snapshot up to the window end. "
       "Rows miss the contacts still open at the end of the run. A folder without collisions.h5 "
       "(a run's kept small outputs) still gives the counts, frequencies and energies; its impact "
-      "speeds and grid are NaN. Without particles.h5 the mass is mass_inserted_kg - "
-      "mass_removed_kg of "
-      "timeseries.csv for a run that began with no particles, else NaN.\n"
+      "speeds and grid are NaN. Without particles.h5 the mass is timeseries.csv's "
+      "mass_inserted_kg - mass_removed_kg for a run that began with no particles, else NaN.\n"
       "Writes --csv OUT.csv (one row per run) and OUT_impact_speed.csv; plot them with "
       "/usr/bin/python3 tools/collision_stats.py OUT.csv"};
   Options o;

@@ -198,7 +198,8 @@ double ledger_mass(const RunFolder& run, double t) {
   const auto after = std::upper_bound(time.begin(), time.end(), t);
   if (after == time.begin()) return kNaN;
   const std::size_t k = std::size_t(after - time.begin()) - 1;
-  return s.column("mass_inserted_kg")[k] - s.column("mass_removed_kg")[k];
+  const double mass = s.column("mass_inserted_kg")[k] - s.column("mass_removed_kg")[k];
+  return mass > 0 ? mass : kNaN;
 }
 
 }  // namespace lbdem::tools

@@ -76,8 +76,9 @@ double snapshot_mass(const RunFolder& run, double t);
 
 /// Mass of the particles [kg] at the last row of timeseries.csv at or before t, from the run's
 /// own ledger: mass_inserted_kg - mass_removed_kg. Only for a run that starts empty (particles = 0
-/// in its first row), whose every particle came in through the inflow; NaN otherwise, or without
-/// those columns. It stands in for snapshot_mass in a folder of kept small outputs (no snapshots).
+/// in its first row), whose every particle came in through the inflow; NaN otherwise, without
+/// those columns, before the first row, or while nothing is in (no mass to divide by). It stands
+/// in for snapshot_mass in a folder of kept small outputs (no snapshots).
 double ledger_mass(const RunFolder& run, double t);
 
 /// Runs body() and maps ToolError to one line "tool: message" on stderr with kToolErrorExit, any
