@@ -80,3 +80,42 @@ hi = [0.02, 0.02, 0.01]
   CHECK(s.mass_removed() > 0);
   CHECK(in_box + s.mass_removed() == Approx(inserted).epsilon(1e-12));
 }
+
+// A feed that ends between two insertion steps: 12.3 ms at 0.02 kg/s, inserting every 5 ms. The
+// last step before the end (about 10 ms) is due only 0.2 g of the 0.246 g asked; the next one
+// (about 15 ms) must deliver the rest, and none after it may add more. The bounds as above: the
+// whole target, past it by less than one particle.
+TEST_CASE("inflow that ends between insertion steps delivers its whole mass", "[scenarios][box]") {
+  auto cfg = Config::from_string(std::string(kBase) + R"(
+[inflow]
+enabled = true
+lo = [0.0, 0.0, 0.03]
+hi = [0.02, 0.02, 0.04]
+mass_rate = 0.02          # kg/s
+insert_interval = 0.005   # s
+start = 0.0
+end = 0.0123
+radius = { kind = "fixed", radius = 5e-4 }
+)");
+  scenarios::BoxScenario box(cfg);
+  cfg.check_unknown_keys();
+  auto& s = box.solver();
+  double last_insertion = -1;
+  const auto step_to = [&](double t) {
+    while (s.time() < t) {
+      const std::size_t before = s.particles().size();
+      box.before_step(s);
+      if (s.particles().size() > before) last_insertion = s.time();
+      s.step();
+    }
+  };
+  step_to(0.03);
+  double inserted = 0;
+  for (double m : s.particles().mass) inserted += m;
+  const double m1 = 2500 * 4.0 / 3.0 * kPi * std::pow(5e-4, 3);
+  const double target = 0.02 * 0.0123;
+  CHECK(inserted >= target * (1 - 1e-12));
+  CHECK(inserted < target + m1);
+  CHECK(last_insertion > 0.0123);  // the rest came after the end
+  CHECK(last_insertion < 0.0123 + 0.005 + 1e-9);
+}
