@@ -15,8 +15,7 @@ kinetic_energy.png (total particle kinetic energy against study time, Fig. 5), w
 run time less T_SPIN (the gas spin-up). A case named by --no-maps CASE (repeatable) has maps of
 another window (a folder of kept outputs whose snapshots are gone): its panels of Figs. 2-4 stay
 empty and say so, it is left out of the gas profiles and Fig. 6 (their titles name it), and only
-its kinetic energy is drawn. Exit 0 on
-success, 2 on missing input.
+its kinetic energy is drawn. Exit 0 on success, 2 on missing input.
 """
 import argparse
 import csv
