@@ -26,12 +26,8 @@ impact_speed = 1.0
 [output]
 interval = 0.01
 )";
-}  // namespace
-
-// [slow]: about 2 s in Release but 29 s under ASan/UBSan, over the sanitizer pass's budget.
-TEST_CASE("inflow delivers its mass rate and the outlet counts what it removes",
-          "[scenarios][box][slow]") {
-  auto cfg = Config::from_string(std::string(kBase) + R"(
+// A feed of 2500 kg/m³ spheres of r = 0.5 mm at 0.02 kg/s every 5 ms into the box's top quarter.
+const char* kInflow = R"(
 [inflow]
 enabled = true
 lo = [0.0, 0.0, 0.03]
@@ -39,6 +35,14 @@ hi = [0.02, 0.02, 0.04]
 mass_rate = 0.02          # kg/s
 insert_interval = 0.005   # s
 radius = { kind = "fixed", radius = 5e-4 }
+)";
+const double kParticleMass = 2500 * 4.0 / 3.0 * kPi * std::pow(5e-4, 3);
+}  // namespace
+
+// [slow]: about 2 s in Release but 29 s under ASan/UBSan, over the sanitizer pass's budget.
+TEST_CASE("inflow delivers its mass rate and the outlet counts what it removes",
+          "[scenarios][box][slow]") {
+  auto cfg = Config::from_string(std::string(kBase) + kInflow + R"(
 [outlet]
 enabled = true
 lo = [0.0, 0.0, 0.0]
@@ -50,7 +54,6 @@ hi = [0.02, 0.02, 0.01]
   double inserted = 0;
   double last_insertion = -1;  // simulated time of the last step that added particles [s]
   int insertions = 0;
-  const double m1 = 2500 * 4.0 / 3.0 * kPi * std::pow(5e-4, 3);
   const auto step_to = [&](double t) {
     while (s.time() < t) {
       const std::size_t before = s.particles().size();
@@ -72,7 +75,7 @@ hi = [0.02, 0.02, 0.01]
   REQUIRE(insertions <= 20);
   const double target = 0.02 * last_insertion;
   CHECK(inserted >= target * (1 - 1e-12));
-  CHECK(inserted < target + m1);
+  CHECK(inserted < target + kParticleMass);
   CHECK(last_insertion > 0.1 - 0.005 - 1e-9);
   // Particles fall 3 cm in ~0.08 s into the outlet: some are removed, and mass is conserved.
   double in_box = 0;
@@ -86,16 +89,9 @@ hi = [0.02, 0.02, 0.01]
 // (about 15 ms) must deliver the rest, and none after it may add more. The bounds as above: the
 // whole target, past it by less than one particle.
 TEST_CASE("inflow that ends between insertion steps delivers its whole mass", "[scenarios][box]") {
-  auto cfg = Config::from_string(std::string(kBase) + R"(
-[inflow]
-enabled = true
-lo = [0.0, 0.0, 0.03]
-hi = [0.02, 0.02, 0.04]
-mass_rate = 0.02          # kg/s
-insert_interval = 0.005   # s
+  auto cfg = Config::from_string(std::string(kBase) + kInflow + R"(
 start = 0.0
 end = 0.0123
-radius = { kind = "fixed", radius = 5e-4 }
 )");
   scenarios::BoxScenario box(cfg);
   cfg.check_unknown_keys();
@@ -112,10 +108,9 @@ radius = { kind = "fixed", radius = 5e-4 }
   step_to(0.03);
   double inserted = 0;
   for (double m : s.particles().mass) inserted += m;
-  const double m1 = 2500 * 4.0 / 3.0 * kPi * std::pow(5e-4, 3);
   const double target = 0.02 * 0.0123;
   CHECK(inserted >= target * (1 - 1e-12));
-  CHECK(inserted < target + m1);
+  CHECK(inserted < target + kParticleMass);
   CHECK(last_insertion > 0.0123);  // the rest came after the end
   CHECK(last_insertion < 0.0123 + 0.005 + 1e-9);
 }
