@@ -1,4 +1,4 @@
-// DEM benchmark: the settled Hertz-Mindlin bed of ../shared/bench (case 2), same particles,
+// DEM benchmark: the settled Hertz-Mindlin bed of bench/peers (case 2), same particles,
 // material, walls, time steps, skin and step counts as the LIGGGHTS and LAMMPS inputs there:
 //   d = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, simple-cubic lattice a = 1.05 mm,
 //   50 x 50 x NZ sites, v = 0.05 sin(k.x) m/s, 5 walls, gravity; settle 20,000 steps of 1e-5 s
@@ -72,7 +72,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"lbdem DEM benchmark (settled Hertz-Mindlin bed of ../shared/bench)"};
+  CLI::App app{"lbdem DEM benchmark (settled Hertz-Mindlin bed of bench/peers)"};
   int n = 20000, steps = 0, settle = 20000, side = 50;
   std::vector<int> threads = {1, 2};
   std::string cache = (std::filesystem::temp_directory_path() / "lbdem-bench").string();

@@ -1,4 +1,4 @@
-// LBM benchmark: the periodic Taylor-Green box of ../shared/bench (case 1), exactly as Palabos
+// LBM benchmark: the periodic Taylor-Green box of bench/peers (case 1), exactly as Palabos
 // runs it there: D3Q19 BGK, double, tau = 0.6, rho = 1 and
 //   u = u0 (sin x cos y cos z, -cos x sin y cos z, 0),  x = 2 pi (i + 1/2) / N,  u0 = 0.05,
 // 20 untimed warm-up steps, then 200 timed steps. MLUPS = N^3 steps / wall of the timed loop.
@@ -176,7 +176,7 @@ Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"lbdem LBM benchmark (periodic Taylor-Green box of ../shared/bench, case 1)"};
+  CLI::App app{"lbdem LBM benchmark (periodic Taylor-Green box of bench/peers, case 1)"};
   std::vector<int> sizes = {64, 128}, threads = {1, 2};
   std::vector<std::string> schemes = {"aa"};
   int steps = 200, warmup = 20;

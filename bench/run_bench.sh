@@ -2,10 +2,10 @@
 # ./lbdem bench [--peers] [--n N] [--steps S] [--lbm-n "64 128"] [--no-dem] [--no-lbm]
 # ./lbdem bench scaling [--threads 1,2] [--case NAME]... [--out DIR]   (bench/scaling.py)
 # ./lbdem bench size [--dem-n N,...] [--lbm-n N,...] [--threads T] [--out DIR]   (bench/size.py)
-# lbdem's particle-steps/s on the settled-bed case of ../shared/bench (N = 20,000 and 100,000, or the
+# lbdem's particle-steps/s on the settled-bed case of bench/peers (N = 20,000 and 100,000, or the
 # one --n) and its MLUPS on the periodic Taylor-Green box (64^3 and 128^3), on 1 and 2 threads; with
 # --peers, STREAM, Palabos, LIGGGHTS and LAMMPS run the same cases in the same invocation through
-# ../shared/bench/run_all.sh, and the ratios are printed. Only ratios from one run compare.
+# bench/peers/run_all.sh, and the ratios are printed. Only ratios from one run compare.
 set -euo pipefail
 BUILD_DIR="$1"; shift
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -51,8 +51,8 @@ if [[ $LBM == 1 ]]; then
 fi
 
 if [[ $PEERS == 1 ]]; then
-  SHARED="$ROOT/../shared/bench"
-  [[ -f $SHARED/run_all.sh ]] || { echo "lbdem bench: $SHARED/run_all.sh not found" >&2; exit 1; }
+  PEERS_DIR="$ROOT/bench/peers"
+  [[ -f $PEERS_DIR/run_all.sh ]] || { echo "lbdem bench: $PEERS_DIR/run_all.sh not found" >&2; exit 1; }
   need=()
   pkgs=(openmpi-bin libopenmpi-dev make)
   [[ $DEM == 1 ]] && pkgs+=(liggghts lammps)
@@ -66,7 +66,7 @@ if [[ $PEERS == 1 ]]; then
   [[ $LBM == 1 ]] && sections+=(palabos)
   [[ $DEM == 1 ]] && sections+=(liggghts lammps)
   PEERS_WORK="$WORK/peers" REPS="$REPS" RANKS="1 2" DEM_SIZES="$SIZES" PLB_SIZES="$LBM_SIZES" \
-    bash "$SHARED/run_all.sh" "${sections[@]}" 2>/dev/null | tee -a "$TABLE"
+    bash "$PEERS_DIR/run_all.sh" "${sections[@]}" 2>/dev/null | tee -a "$TABLE"
   # Ratios: lbdem per thread against the best peer per rank, and lbdem's 1 -> 2 thread speed-up.
   awk '
     { for (i = 3; i <= NF; i++) if ($i == "particle-steps/s") { v = $(i-1) + 0; t = $(i-2); break }

@@ -6,7 +6,7 @@ usage: ./lbdem bench scaling [--threads 1,2,...] [--case NAME]... [--out DIR]
        (called as /usr/bin/python3 bench/scaling.py BUILD_DIR [options])
 
 Cases (default: all):
-  dem_bed        the settled Hertz-Mindlin bed of ../shared/bench, N = 20,000, 2,000 timed steps
+  dem_bed        the settled Hertz-Mindlin bed of bench/peers, N = 20,000, 2,000 timed steps
                  (lbdem-bench-dem): particle-steps/s
   lbm_box        the periodic Taylor-Green box, 64^3, 100 steps (lbdem-bench-lbm): MLUPS
   fluidized_bed  the default preset to 0.2 s (pour, ramp, fluidized): wall time

@@ -7,7 +7,7 @@ usage: ./lbdem bench size [--dem-n 10000,...] [--lbm-n 32,...] [--threads T] [--
        (called as /usr/bin/python3 bench/size.py BUILD_DIR [options]; --dem-n '' or --lbm-n ''
        leaves that part out)
 
-DEM: the Hertz-Mindlin bed of ../shared/bench (lbdem-bench-dem), 8 layers deep like its N = 20,000
+DEM: the Hertz-Mindlin bed of bench/peers (lbdem-bench-dem), 8 layers deep like its N = 20,000
 case, with the footprint grown to the size asked (side S = round(sqrt(N / 8)), N = 8 S^2: a bed of
 the same depth, so every size has about the same contacts per particle; a 50 x 50 footprint made
 N = 10^6 a column 400 layers high, still falling after the settling steps, Z = 0.7), settled for

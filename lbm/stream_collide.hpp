@@ -3,7 +3,7 @@
 // operator and the forcing policy.
 //
 // Scheme chosen by benchmark: bench/lbm_bench.cpp --scheme aa ab nt, the periodic Taylor-Green
-// box of ../shared/bench (BGK, double, 200 steps), GCC 12 -O3 -march=native, 2-core KVM Xeon
+// box of bench/peers (BGK, double, 200 steps), GCC 12 -O3 -march=native, 2-core KVM Xeon
 // (Sapphire Rapids class), machine otherwise idle. STREAM triad in the same run: 15.1 GB/s on 1
 // thread, 28.4 GB/s on 2, a 304 B/cell roofline of 49.6 and 93.4 MLUPS. MLUPS:
 //                                          N=64 1 thr   N=64 2 thr   N=128 1 thr   N=128 2 thr

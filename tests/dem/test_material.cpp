@@ -1,4 +1,4 @@
-// Pair mixing against the values ../shared/bench/README.md states for its case (E = 5 MPa,
+// Pair mixing against the values bench/peers/README.md states for its case (E = 5 MPa,
 // nu = 0.3: E* = E/(2(1-nu^2)) = 2.747e6 Pa, G* = E/(4(2-nu)(1+nu)) = 5.656e5 Pa) and a
 // hand-computed unequal pair.
 #include <catch2/catch.hpp>
