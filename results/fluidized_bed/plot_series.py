@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""Draws bed_series.png from the kept series of this folder: bed height and pressure drop over
+time for the Bond-number-10 original against its coarse-grained runs (left) and for the
+cohesionless CG 2-4 runs (right). Run from the repository root:
+    /usr/bin/python3 results/fluidized_bed/plot_series.py"""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+WEIGHT = 44.11 + 0.35  # weight per area less buoyancy, plus the gas head over the column [Pa]
+
+
+def series(name):
+    d = np.genfromtxt(os.path.join(HERE, name + "_series.csv"), delimiter=",", names=True)
+    return d["time_s"], d["bed_height_m"] * 1e3, d["pressure_drop_Pa"]
+
+
+groups = [
+    ("Bond number 10: original and CG", [("cg1_bo10", "original (CG 1)"),
+                                          ("cg2_bo10_l3", "CG 2, Bond number kept (l^3)"),
+                                          ("cg2_bo10_l2", "CG 2, tensile strength kept (l^2)"),
+                                          ("cg4_bo10_l3", "CG 4, l^3"),
+                                          ("cg4_bo10_l2", "CG 4, l^2")]),
+    ("cohesionless: CG 2, 3, 4", [("cg2", "CG 2"), ("cg3", "CG 3"), ("cg4", "CG 4"),
+                                  ("cg4_wide", "CG 4, 8 x 8 mm")]),
+]
+fig, ax = plt.subplots(2, 2, figsize=(11, 6.5), sharex=True)
+for col, (title, cases) in enumerate(groups):
+    for name, label in cases:
+        t, h, dp = series(name)
+        ax[0, col].plot(t, h, lw=1, label=label)
+        ax[1, col].plot(t, dp, lw=0.8, label=label)
+    ax[0, col].set_title(title)
+    ax[0, col].set_ylabel("bed height [mm]")
+    ax[1, col].set_ylabel("pressure drop [Pa]")
+    ax[1, col].set_xlabel("time [s]")
+    ax[1, col].axhline(WEIGHT, color="k", ls=":", lw=0.8, label="weight / area + gas head")
+    ax[1, col].set_ylim(30, 60)
+    ax[0, col].set_ylim(4, 9)
+    ax[0, col].legend(fontsize=8)
+ax[1, 1].legend(fontsize=8, loc="lower right")
+fig.tight_layout()
+out = os.path.join(HERE, "bed_series.png")
+fig.savefig(out, dpi=110)
+print("wrote", out)
