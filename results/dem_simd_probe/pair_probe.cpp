@@ -15,8 +15,8 @@ using namespace lbdem;
 using namespace lbdem::dem;
 using Law = ContactLaw<HertzMindlin, NoRolling, NoCohesion>;
 
-// The tally (ContactTally) as it was when this probe was timed (session 22: 13 doubles;
-// dem/pair_list.hpp split the last five into ContactRecord in session 26), kept here so the probe
+// The tally (ContactTally) as it was when this probe was timed (2026-12-02: 13 doubles;
+// dem/pair_list.hpp split the last five into ContactRecord on 2026-12-04), kept here so the probe
 // builds as timed.
 struct ProbeTally {
   double e_normal_damping = 0, e_tangential_damping = 0;
