@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::array<RuleInfo, 3> kRules = {{
     {ScalingRule::stiffness_only, "stiffness_only", "linear",
-     "the rheometer seed's k_cg = l k, damping coefficient read as absolute (DESIGN 1.2)",
+     "the rheometer seed's k_cg = l k, damping coefficient read as absolute",
      "t_c / l to O(zeta^2); NOT e (zeta falls as 1/l^2)"},
     {ScalingRule::linear_similarity, "linear_similarity", "linear",
      "Bierwisch et al. 2009, J. Mech. Phys. Solids 57:10; Radl et al. 2011",

@@ -13,7 +13,7 @@ enum class ScalingRule { stiffness_only, linear_similarity, hertz };
 /// Cohesion scaling rules (cohesion_scaling.hpp).
 enum class CohesionRule { tensile_strength, bond_number, unscaled };
 
-/// One row of the rule table (STYLE §2 "registration"): the names the config accepts, the normal
+/// One row of the rule table (a checked-in name table): the names the config accepts, the normal
 /// law the parcel parameters are meant for, the reference and the invariant the rule keeps.
 struct RuleInfo {
   ScalingRule rule;
@@ -40,7 +40,7 @@ ScalingRule rule_from_name(std::string_view name, const std::string& key);
 CohesionRule cohesion_rule_from_name(std::string_view name, const std::string& key);
 
 /// l = n^(1/3) for n original particles per parcel, and back (n = l^3). The jet-mill study names
-/// its cases by n (DESIGN §1.3), the rheometer study by l (§1.2).
+/// its cases by n, as the seed study does; the rheometer study by l.
 double size_factor_from_particles_per_parcel(double n);
 double particles_per_parcel(double size_factor);
 

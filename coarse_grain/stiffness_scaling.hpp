@@ -6,10 +6,10 @@
 //   omega_0 = sqrt(k/m*), zeta = gamma / (2 sqrt(m* k)),
 //   t_c = pi / (omega_0 sqrt(1 - zeta^2)), e = exp(-pi zeta / sqrt(1 - zeta^2)),
 //   delta_max = (v/omega_0) f(zeta)  (impact speed v; f depends on zeta alone)
-// (closed form of the damped oscillator, DESIGN 2.2; Schaefer, Dippel & Wolf 1996, J. Phys. I 6:5).
+// (closed form of the damped oscillator; Schaefer, Dippel & Wolf 1996, J. Phys. I 6:5).
 // With m* -> l^3 m* the rules below follow.
 //
-// stiffness_only (the rheometer seed, k_cg = l k, DESIGN 1.2, with the damping coefficient read as
+// stiffness_only (the rheometer seed, k_cg = l k, with the damping coefficient read as
 // the absolute gamma): omega_0 -> omega_0 / l, zeta -> zeta / l^2, so e drifts up with l
 // (e = 0.8: 0.9167 at l = 1.6, 0.9459 at l = 2, 0.9862 at l = 4) and t_c -> l t_c sqrt(1 -
 // zeta^2) / sqrt(1 - zeta^2/l^4), within 0.3 % of l t_c for e = 0.8. The engine's linear law

@@ -1,7 +1,8 @@
 #pragma once
 // Fixed-block reductions: the block boundaries never depend on the thread count, and the block
 // partials are added serially, so a sum is bitwise the same for any OpenMP thread count
-// (STYLE §6; the alternative, reduction(+:), changes the summation order with the threads).
+// (the determinism rule of docs/architecture.md; the alternative, reduction(+:), changes the
+// summation order with the threads).
 #include <cstddef>
 #include <vector>
 

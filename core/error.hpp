@@ -57,7 +57,7 @@ std::string vec_text(const V& v) {
   return list_text({double(v[0]), double(v[1]), double(v[2])});
 }
 
-/// Exit code for every input error (DESIGN §3).
+/// Exit code for every input error (docs/user-guide.md, Troubleshooting).
 inline constexpr int kInputErrorExit = 2;
 
 }  // namespace lbdem

@@ -2,7 +2,7 @@
 // Collision statistics, always on and aggregated (counts, impact-speed histograms, energy
 // dissipated by mechanism, over time and on a coarse spatial grid), plus, opt-in within a time
 // window and a row budget, one row per contact for collisions.h5. A dense bed makes 1e8 contacts in
-// a few hundredths of a second, so raw rows are never written unasked (DESIGN §5).
+// a few hundredths of a second, so raw rows are never written unasked.
 #include <cstdint>
 #include <string>
 #include <vector>

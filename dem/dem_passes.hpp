@@ -11,8 +11,8 @@ namespace lbdem::dem {
 
 /// Books one evaluation into the contact's tally, impact record and state bits. Damping energy is
 /// integrated with the trapezoidal rule over the powers at consecutive steps (second order; the
-/// velocity-Verlet energy error is of the same order, DESIGN §5); sliding and rolling losses are
-/// the energy the cap removed from the springs in the step; stiffness-change energy is booked
+/// velocity-Verlet energy error is of the same order, docs/physics.md); sliding and rolling losses
+/// are the energy the cap removed from the springs in the step; stiffness-change energy is booked
 /// apart.
 template <bool kRolling>
 inline void book(ContactTally& t, ContactRecord& r, std::uint8_t& state, const ContactForce& c,

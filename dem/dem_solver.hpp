@@ -2,7 +2,7 @@
 // The DEM engine: velocity-Verlet integration of spheres with the composed contact law, a Verlet
 // neighbour list over linked cells, walls, collision statistics and energy accounting.
 //
-// Time step (ARCHITECTURE in README.md):
+// Time step (docs/physics.md, DEM integration; docs/architecture.md, The time loop):
 //  1. half kick and drift: v += dt/2 F/m, omega += dt/2 T/I, x += dt v; walls move to t + dt;
 //  2. neighbour rebuild if a particle moved more than skin/2 (or a wall and a particle together
 //  more

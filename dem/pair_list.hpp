@@ -13,8 +13,8 @@ namespace lbdem::dem {
 /// Accounting of the contact a pair is in now, the fields every step of a touch updates: energies
 /// dissipated since it began [J] and the powers of the last step [W] (trapezoidal integration).
 /// Eight doubles on one cache line; the impact record lives apart (ContactRecord), so the pair pass
-/// moves 64 B of tally per contact instead of 104 (session 25 estimated the 40 B at about 5 % of
-/// the bench bed's step on a busy AMD VM; session 26 measured +0.7 % on a Xeon, README).
+/// moves 64 B of tally per contact instead of 104 (+0.7 % on the bench bed, measured on a Xeon;
+/// results/bench/tally_split_20261204.txt).
 struct alignas(64) ContactTally {
   double e_normal_damping = 0, e_tangential_damping = 0;
   double p_normal_damping = 0, p_tangential_damping = 0;

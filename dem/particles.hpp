@@ -1,5 +1,5 @@
 #pragma once
-// Structure-of-arrays particle storage (STYLE §3): one array per property, a 3-vector per particle
+// Structure-of-arrays particle storage: one array per property, a 3-vector per particle
 // as one contiguous Eigen::Vector3d. Spheres only.
 #include "core/types.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Time-step estimates from the contact time and the Rayleigh time (DESIGN §2.2).
+// Time-step estimates from the contact time and the Rayleigh time (docs/physics.md, DEM time step).
 #include <string>
 #include <vector>
 

@@ -1,9 +1,9 @@
 #pragma once
-// SI <-> lattice units in one place (STYLE §4): the user gives dx, dt and the gas density in SI;
+// SI <-> lattice units in one place: the user gives dx, dt and the gas density in SI;
 // every conversion below carries its dimensional formula. Lattice units never leave lbm/ and
 // coupling/. With c_s = dx / (sqrt(3) dt) the lattice pressure is rho c_s^2, so a pressure
-// difference Dp is a density change Dp / (rho c_s^2) (DESIGN §5): in a fluidized bed the bed's
-// pressure drop, not the Mach number, limits the time step.
+// difference Dp is a density change Dp / (rho c_s^2) (docs/physics.md, Lattice units and limits):
+// in a fluidized bed the bed's pressure drop, not the Mach number, limits the time step.
 #include <string>
 #include <vector>
 
@@ -41,7 +41,7 @@ struct StabilityInput {
   double dp_static_si = 0;  // largest static pressure difference (bed weight, hydrostatic) [Pa]
   double nu_turbulent_max_si = 0;  // largest LES eddy viscosity expected (0: no LES) [m^2/s]
   // tau - 1/2 must exceed this [-]. The default suits TRT (magic 3/16), whose steady solutions do
-  // not depend on tau and which the fluidized bed runs within 1e-3 of 1/2 (DESIGN §5); a BGK
+  // not depend on tau and which the fluidized bed runs within 1e-3 of 1/2 (docs/physics.md); a BGK
   // caller passes a larger margin.
   double tau_margin = 1e-4;
   std::string key_dt = "fluid.dt", key_dx = "fluid.dx";

@@ -40,21 +40,19 @@ std::unique_ptr<Scenario> make(const Config& c) {
   return std::make_unique<S>(c);
 }
 
-// Checked-in table of scenarios (STYLE §2 "registration").
+// Checked-in table of scenarios (docs/architecture.md, Adding a scenario).
 const std::vector<ScenarioEntry>& scenarios() {
   static const std::vector<ScenarioEntry> table = {
       {"box",
        "particles poured into a box and settling; faces wall/periodic/open, STL walls, inflow",
        "scenarios/box/presets/default.toml", make<BoxScenario>},
       {"fluidized_bed",
-       "gas-fluidized bed of fine (cohesive) particles, original or coarse-grained (DESIGN 1.1)",
+       "gas-fluidized bed of fine (cohesive) particles, original or coarse-grained",
        "scenarios/fluidized_bed/presets/default.toml", make<FluidizedBedScenario>},
       {"jet_mill",
-       "spiral jet mill: LES gas vortex from grinding jets, coupled coarse-grained feed (DESIGN "
-       "1.3)",
+       "spiral jet mill: LES gas vortex from grinding jets, coupled coarse-grained feed",
        "scenarios/jet_mill/presets/default.toml", make<JetMillScenario>},
-      {"rheometer",
-       "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell, DESIGN 1.2)",
+      {"rheometer", "powder rheometer: impeller torque in a cup of powder (Anton Paar powder cell)",
        "scenarios/rheometer/presets/default.toml", make<RheometerScenario>},
   };
   return table;
@@ -101,13 +99,12 @@ void log_phase_times(Log& log, RunClock::duration elapsed) {
 int run_study(const StudyOptions& opt) {
   if (opt.list || opt.name.empty()) {
     std::cout << "fluidized_bed  original against CG 1-4 beds, cohesionless and cohesive under the "
-                 "l^2 and l^3 rules (DESIGN 1.1): bed height and pressure drop, spectra, table\n";
-    std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule "
-                 "(DESIGN 1.2): torque table and plot\n";
-    std::cout
-        << "jet_mill  CG-1, 2, 4, 8, 10 of the spiral jet mill (DESIGN 1.3), scaled gas cells "
-           "(cg*_fixed: one grid): maps, profiles, kinetic energy, collisions, table; "
-           "--quick: a check in minutes\n";
+                 "l^2 and l^3 rules: bed height and pressure drop, spectra, table\n";
+    std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule: "
+                 "torque table and plot\n";
+    std::cout << "jet_mill  CG-1, 2, 4, 8, 10 of the spiral jet mill, scaled gas cells "
+                 "(cg*_fixed: one grid): maps, profiles, kinetic energy, collisions, table; "
+                 "--quick: a check in minutes\n";
     return 0;
   }
   if (opt.quick && opt.name != "jet_mill")

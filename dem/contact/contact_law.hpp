@@ -1,7 +1,8 @@
 #pragma once
-// A contact law composed of small members (STYLE §2): a normal law (elastic + damping), the
-// tangential spring with Coulomb cap, a rolling model and a cohesion model. One templated loop is
-// instantiated per combination and chosen once per run with std::visit (dem/contact/registry.hpp).
+// A contact law composed of small members (docs/architecture.md): a normal law (elastic + damping),
+// the tangential spring with Coulomb cap, a rolling model and a cohesion model. One templated loop
+// is instantiated per combination and chosen once per run with std::visit
+// (dem/contact/registry.hpp).
 #include <algorithm>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Values passed into and out of a contact law (STYLE §2: values in, values out, no shared scratch).
+// Values passed into and out of a contact law (values in, values out, no shared scratch).
 #include "core/types.hpp"
 
 namespace lbdem::dem {

@@ -1,7 +1,8 @@
 #pragma once
-// Name -> law table (STYLE §2 "registration"): the config names a normal law, a rolling model and a
-// cohesion model; make_law_table() instantiates the one composed ContactLaw and its
-// per-material-pair parameters. The solver dispatches once per step with std::visit.
+// Name -> law table (docs/architecture.md, Adding a normal contact law): the config names a normal
+// law, a rolling model and a cohesion model; make_law_table() instantiates the one composed
+// ContactLaw and its per-material-pair parameters. The solver dispatches once per step with
+// std::visit.
 #include <string>
 #include <type_traits>
 #include <variant>

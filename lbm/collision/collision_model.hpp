@@ -1,6 +1,6 @@
 #pragma once
 // The run-time choice of collision operator; the solver std::visit's it once per step, so the
-// kernel is compiled per operator (STYLE 2: dispatch once per loop, not once per cell).
+// kernel is compiled per operator (dispatch once per loop, not once per cell).
 #include "lbm/collision/bgk.hpp"
 #include "lbm/collision/collision_operator.hpp"
 #include "lbm/collision/regularized_les.hpp"

@@ -5,7 +5,7 @@
 // cell's force, and overwrites f with the post-collision populations including the forcing source.
 // relax<false> must not read the force: the kernel passes zeros and relies on the terms vanishing.
 //
-// A new operator (regularized or MRT with a Smagorinsky eddy viscosity, DESIGN 2.2) is one more
+// A new operator (regularized or MRT with a Smagorinsky eddy viscosity) is one more
 // header beside bgk.hpp and trt.hpp and one more alternative in collision_model.hpp: the LES
 // variant computes its local omega from the non-equilibrium stress of f inside relax().
 #include "lbm/cell.hpp"

@@ -1,8 +1,8 @@
 #pragma once
 // Regularized BGK (Latt & Chopard 2006, Math. Comput. Simul. 72, 165) with a Smagorinsky eddy
 // viscosity taken locally from the non-equilibrium stress (Hou, Sterling, Chen & Doolen 1996,
-// Fields Inst. Commun. 6, 151; Malaspinas & Sagaut 2012, J. Fluid Mech. 700, 514). DESIGN 1.3
-// and 2.2: the stable LES operator for the jet mill.
+// Fields Inst. Commun. 6, 151; Malaspinas & Sagaut 2012, J. Fluid Mech. 700, 514): the
+// stable LES operator for the jet mill (docs/physics.md, Collision operators and LES).
 //
 // Collision, with Q_q = c_q c_q - c_s^2 I and Pi = sum_q c_q c_q (f_q - f_q^eq):
 //   f_q <- f_q^eq + (1 - omega) w_q [c_q.(j - rho u)/c_s^2 + Q_q : Pi / (2 c_s^4)]

@@ -88,7 +88,7 @@ class DemDriver {
   RunCostMeter cost_;
 };
 
-/// Derived DEM numbers for the start-up banner (DESIGN §3). The radius range counts a feed's
+/// Derived DEM numbers for the start-up banner. The radius range counts a feed's
 /// radii (feed_r_min > 0) with the particles present at the start.
 void dem_banner(Log& log, const dem::DemSolver& s, double impact_speed, double contact_time,
                 double rayleigh_time, const std::string& where, double feed_r_min = 0,

@@ -48,7 +48,8 @@ std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c) 
   std::vector<Vec3> vel;
   s.density(rho);
   s.velocity(vel);
-  // Fixed-block sums: the same bits at any thread count (STYLE §6). Solid cells read rho = 0.
+  // Fixed-block sums: the same bits at any thread count (docs/architecture.md). Solid cells read
+  // rho = 0.
   const double fluid_cells = deterministic_sum(
       rho.size(), [&](std::size_t i) { return rho[i] > 0 ? 1.0 : 0.0; }, 0.0);
   const double speed = deterministic_sum(
@@ -214,7 +215,7 @@ std::optional<std::string> check_fluid_mach(const lbm::LbmSolver& s, const Fluid
          " at t = " + to_text(time) + " s: " + to_text(speed) + " m/s at cell (" +
          std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + "), [" +
          to_text(at[0]) + ", " + to_text(at[1]) + ", " + to_text(at[2]) +
-         "] m, its fastest (the weakly compressible gas's errors grow as Ma^2; DESIGN 5 keeps "
+         "] m, its fastest (the weakly compressible gas's errors grow as Ma^2; presets keep "
          "Mach 0.17); the run goes on; fix: a gas step of at most " +
          to_text(0.1 * c.dx / speed) + " s (fluid.max_speed = " + to_text(speed) +
          " m/s at fluid.lattice_velocity = 0.1, or fluid.dt; " + to_text(top / 0.1) +

@@ -1,8 +1,8 @@
 #pragma once
-// The gas part of a run folder (DESIGN §3), in SI only: snapshots in fluid.h5 + fluid.xdmf (cell
-// centres of a 3DCoRectMesh, at the instants of the particle snapshots), timeseries.csv columns,
-// the populations in checkpoint.h5, and the divergence watchdog. Every file is written atomically
-// (H5Out, write_file_atomic), so a stopped or failed run leaves only whole files.
+// The gas part of a run folder (docs/user-guide.md), in SI only: snapshots in fluid.h5 + fluid.xdmf
+// (cell centres of a 3DCoRectMesh, at the instants of the particle snapshots), timeseries.csv
+// columns, the populations in checkpoint.h5, and the divergence watchdog. Every file is written
+// atomically (H5Out, write_file_atomic), so a stopped or failed run leaves only whole files.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -50,7 +50,7 @@ inline constexpr double kHealthyDensity = 0.2, kHealthySpeed = 0.5;
 std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const FluidConfig& c,
                                               double time, std::int64_t dem_step);
 
-/// The lattice Mach number above which a warning is due: DESIGN 5 keeps the lattice velocity at
+/// The lattice Mach number above which a warning is due: the presets keep the lattice velocity at
 /// about 0.1 (Mach 0.17), where the weakly compressible model's O(Ma^2) errors are about 3 %; at
 /// Mach 0.2 they pass 4 %. A run may still be sound (a jet's core in a few cells), so it goes on.
 inline constexpr double kWarnMach = 0.2;

@@ -1,7 +1,7 @@
 #pragma once
 // What the run command needs from a scenario: a banner, the loop, and the output settings. A
 // scenario is built from a config (and validates all of it in its constructor, before any output);
-// it composes solvers and is not a subclass of them (STYLE §4).
+// it composes solvers and is not a subclass of them.
 #include "core/log.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/run_context.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The spiral jet mill (DESIGN §1.3; Scott, Borissova, Di Renzo & Ghadiri): a flat cylindrical
+// The spiral jet mill (docs/studies.md; Scott, Borissova, Di Renzo & Ghadiri): a flat cylindrical
 // chamber, grinding jets at an angle to the wall tangent (jet_mill_geometry.hpp: the
 // notional-nozzle source model and its limits), a vortex finder through the top plate, an LES gas.
 // Built on the box (BoxScenario): [box] is the chamber's bounding box, [fluid] the gas (collision =

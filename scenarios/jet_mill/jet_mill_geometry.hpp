@@ -1,7 +1,7 @@
 #pragma once
-// The spiral jet mill's gas geometry (DESIGN §1.3; Scott, Borissova, Di Renzo & Ghadiri): a flat
-// cylindrical chamber with grinding nozzles on its wall and a central outlet (vortex finder)
-// through the top plate, all in SI, and the jets' sources on the lattice.
+// The spiral jet mill's gas geometry (docs/physics.md, Jet model; Scott, Borissova, Di Renzo &
+// Ghadiri): a flat cylindrical chamber with grinding nozzles on its wall and a central outlet
+// (vortex finder) through the top plate, all in SI, and the jets' sources on the lattice.
 //
 // Jet model (notional nozzle with mass and momentum sources). Real grinding nozzles are choked and
 // their jets under-expanded and supersonic; a weakly compressible LBM holds lattice speeds of about

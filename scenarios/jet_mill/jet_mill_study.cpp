@@ -39,13 +39,13 @@ struct Case {
 const std::vector<Case>& cases() {
   // clang-format off
   static const std::vector<Case> c = {
-      // The default series: the seed's nozzles at a grinding pressure of 5 bar (README, "The jet
-      // mill study": DESIGN 1.3's 120 m/s jets cannot drive the seed's powder speeds).
+      // The default series: the seed's nozzles at a grinding pressure of 5 bar (results/jet_mill/
+      // README.md: an incompressible 120 m/s jet cannot drive the seed's powder speeds).
       {"cg1_p5bar", 1, true}, {"cg2_p5bar", 2, true}, {"cg4_p5bar", 4, true},
       {"cg8_p5bar", 8, true}, {"cg10_p5bar", 10, true},
       // CG-10 of that series with a DEM step of t_c/34 instead of the seed's t_c/8.5.
       {"cg10_p5bar_tc30", 10, false},
-      // DESIGN 1.3's 120 m/s jets, on the scaled cells and on one fixed grid.
+      // Incompressible 120 m/s jets, on the scaled cells and on one fixed grid.
       {"cg1", 1, false}, {"cg2", 2, false}, {"cg4", 4, false}, {"cg8", 8, false},
       {"cg10", 10, false}, {"cg10_tc30", 10, false},
       {"cg1_fixed", 1, false}, {"cg2_fixed", 2, false}, {"cg4_fixed", 4, false, "cg4"},

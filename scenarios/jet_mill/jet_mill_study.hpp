@@ -1,8 +1,8 @@
 #pragma once
-// `./lbdem study jet_mill`: the coarse-graining series of DESIGN §1.3 (Scott, Borissova, Di Renzo
-// & Ghadiri): CG-1, 2, 4, 8, 10 (n originals per parcel) on the scaled gas cells with 5 bar
+// `./lbdem study jet_mill`: the coarse-graining series of the jet-mill study (Scott, Borissova, Di
+// Renzo & Ghadiri): CG-1, 2, 4, 8, 10 (n originals per parcel) on the scaled gas cells with 5 bar
 // nozzles (cg*_p5bar), each run (or resumed) into studies/jet_mill/NAME; on request with --cases
-// DESIGN 1.3's 120 m/s jets (cg1 ... cg10), the fixed-grid sets (cg*_fixed, cg*_fixed_p5bar) and
+// incompressible 120 m/s jets (cg1 ... cg10), the fixed-grid sets (cg*_fixed, cg*_fixed_p5bar) and
 // CG-10 with a DEM step near t_c/30 (cg10_tc30 at t_c/27, cg10_p5bar_tc30 at t_c/34).
 // Study time is the run's time less the 0.03 s gas spin-up; the figures' window is the study's
 // 0.07-0.1 s. Then, per case, lbdem-jet-mill-maps (positions, speed map, wall-distance profile,

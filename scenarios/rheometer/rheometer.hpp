@@ -1,11 +1,11 @@
 #pragma once
-// Powder rheometer (Anton Paar powder cell, DESIGN §1.2): a cylindrical cup on a floor, a two-blade
-// impeller (one cuboid through the axis, 48 x 2 x 10 mm by default) with an optional square shaft
-// above it, both analytic cuboids or triangle meshes. The powder is placed on a jittered lattice
-// around the resting impeller, settles, and the impeller is then spun up to its speed. Recorded:
-// the drive torque (torque_Nm, the torque the motor applies about +z; positive for positive rpm),
-// the torques the particles put on cup and floor, and the particles' angular momentum about the
-// axis (their balance is a test).
+// Powder rheometer (Anton Paar powder cell; docs/studies.md): a cylindrical cup on a floor, a
+// two-blade impeller (one cuboid through the axis, 48 x 2 x 10 mm by default) with an optional
+// square shaft above it, both analytic cuboids or triangle meshes. The powder is placed on a
+// jittered lattice around the resting impeller, settles, and the impeller is then spun up to its
+// speed. Recorded: the drive torque (torque_Nm, the torque the motor applies about +z; positive for
+// positive rpm), the torques the particles put on cup and floor, and the particles' angular
+// momentum about the axis (their balance is a test).
 #include <memory>
 #include <random>
 #include <string>

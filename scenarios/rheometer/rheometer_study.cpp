@@ -31,7 +31,7 @@ struct Case {
   std::string note;
 };
 
-// The series of DESIGN §1.2 and issue 9 §2: CG 1 / 1.6 / 2 under the seed's literal rule
+// The series of the rheometer study (docs/studies.md): CG 1 / 1.6 / 2 under the seed's literal rule
 // (stiffness_only), linear similarity and Hertz, the fixed-step variants, a t_c/50 check, and the
 // geometry variants that test the gap-jamming and blade-resolution explanations.
 const std::vector<Case>& cases() {

@@ -1,6 +1,6 @@
 #pragma once
-// `./lbdem study rheometer`: the CG series of DESIGN §1.2 under each scaling rule, run one case
-// after another into one folder, then a table (peak torque, steady torque with its statistical
+// `./lbdem study rheometer`: the CG series of the rheometer study under each scaling rule, run one
+// case after another into one folder, then a table (peak torque, steady torque with its statistical
 // error, fluctuation, gap in parcel diameters, wall time per simulated second) and the torque plot.
 // A case whose folder says "finished" is not run again; one that stopped is resumed.
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
-// Shared inputs of the coarse-graining tests: the rheometer seed's HDPE contact set (DESIGN 1.2:
-// d = 1.07 mm, rho = 950 kg/m^3, k = 1000 N/m, e = 0.8, mu = 0.55, mu_r = 0.3) and the Hertz
-// modulus the DEM tests use (5 MPa; the seed gives none).
+// Shared inputs of the coarse-graining tests: the rheometer seed's HDPE contact set
+// (docs/studies.md: d = 1.07 mm, rho = 950 kg/m^3, k = 1000 N/m, e = 0.8, mu = 0.55, mu_r = 0.3)
+// and the Hertz modulus the DEM tests use (5 MPa; the seed gives none).
 #include <omp.h>
 
 #include "coarse_grain/scale.hpp"

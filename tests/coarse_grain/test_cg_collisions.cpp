@@ -70,7 +70,7 @@ TEST_CASE("CG collisions: linear_similarity keeps e and delta_max/d, t_c ~ l", "
   for (double l : {1.0, 2.0, 4.0}) {
     const auto o = collide(ScalingRule::linear_similarity, l, v, tc1 / 50);
     INFO("l = " << l << ": e " << o.e << ", t_c " << o.t_c << ", delta_max/d " << o.dmax_d);
-    // 1 %: velocity Verlet at 50 steps per contact (STYLE 5; tests/dem/test_restitution.cpp).
+    // 1 %: velocity Verlet at 50 steps per contact (tests/dem/test_restitution.cpp).
     CHECK(o.e == Approx(0.8).epsilon(0.01));
     // Contact duration resolved to one step of 50: 2 %.
     CHECK(o.t_c / l == Approx(tc1).epsilon(0.02));

@@ -35,7 +35,7 @@ constexpr double kExact = 1e-12;
 }  // namespace
 
 TEST_CASE("size factor from particles per parcel and back", "[coarse_grain]") {
-  // The rheometer seed's parcel counts (DESIGN 1.2): 70,950 / 17,320 / 8,870 for l = 1, 1.6, 2.
+  // The rheometer seed's parcel counts: 70,950 / 17,320 / 8,870 for l = 1, 1.6, 2.
   // The counts are rounded to 4 significant digits and come from separate fills, so 0.3 %.
   CHECK(cg::size_factor_from_particles_per_parcel(70950.0 / 17320) == Approx(1.6).epsilon(3e-3));
   CHECK(cg::size_factor_from_particles_per_parcel(70950.0 / 8870) == Approx(2.0).epsilon(3e-3));
@@ -108,7 +108,7 @@ TEST_CASE("linear_similarity keeps e and t_c/l, with k ~ l and gamma ~ l^2", "[c
   const auto m = test::hdpe();
   const auto s1 = test::cg_settings(ScalingRule::linear_similarity, 1.0);
   const auto o = cg::scale(m, test::kSeedRadius, s1);
-  // Seed check outside the rule code: t_c = 55.2 us at k = 1000 N/m (DESIGN 1.2). The diameter
+  // Seed check outside the rule code: t_c = 55.2 us at k = 1000 N/m (the seed's). The diameter
   // 1.07 mm is quoted to 3 digits (+-0.5 %) and t_c ~ d^{3/2}: 1 %.
   CHECK(linear_tc(o) == Approx(55.2e-6).epsilon(0.01));
   for (double l : {1.6, 2.0, 4.0}) {
@@ -181,8 +181,8 @@ TEST_CASE("hertz keeps E, e, delta_max/d and t_c/l", "[coarse_grain]") {
 
 TEST_CASE("cohesion: Hamaker ~ l (tensile strength) or l^2 (Bond number), cut-offs absolute",
           "[coarse_grain]") {
-  // DESIGN 1.1: d = 100 um, rho = 1500 kg/m^3, A = 1e-19 J, h_min = 0.4 nm give F = 2.6 uN
-  // against a weight of 7.7 nN (Bo ~ 340), quoted to 2 digits: 2 %.
+  // The fluidized-bed study's particle: d = 100 um, rho = 1500 kg/m^3, A = 1e-19 J, h_min = 0.4 nm
+  // give F = 2.6 uN against a weight of 7.7 nN (Bo ~ 340), quoted to 2 digits: 2 %.
   auto m = test::hdpe();
   m.density = 1500;
   m.hamaker = 1e-19;

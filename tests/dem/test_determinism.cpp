@@ -1,5 +1,5 @@
 // Bitwise equality of the particle state, energy totals and wall loads for 1, 2 and 4 threads
-// (per-contact forces, ordered gather, fixed-block sums: STYLE §6).
+// (per-contact forces, ordered gather, fixed-block sums).
 #include <omp.h>
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,8 @@
 // by k): local error O(dt^3), 8x per halving. Hertz's F ~ delta^{3/2} has an unbounded second
 // derivative at touch: O(dt^{5/2}), 2^{5/2} = 5.7x per halving (measured 5.84 and 5.90 from t_c/50
 // to t_c/200), so the ">= 6x" holds for the linear law only; (2) the budget of a
-// damped, frictional settling bed closes at second order, as velocity Verlet allows (DESIGN §5).
+// damped, frictional settling bed closes at second order, as velocity Verlet allows
+// (docs/physics.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 

@@ -76,9 +76,9 @@ TEST_CASE("Hertz-Mindlin (Tsuji damping) restitution and contact time", "[dem][p
 TEST_CASE("a damped collision closes its energy budget to second order in the step",
           "[dem][physics][energy]") {
   // Stored (kinetic + elastic) plus dissipated energy against the energy before the contact.
-  // Velocity Verlet with the dashpot on the predicted velocity is second-order: DESIGN §5 gives
+  // Velocity Verlet with the dashpot on the predicted velocity is second-order: it gives
   // about 1e-3 for one damped Hertz collision at t_c/50, falling 4x per halving of the step.
-  // Bounds at t_c/50: 2e-3 for Hertz (twice that figure). DESIGN gives no figure for the linear
+  // Bounds at t_c/50: 2e-3 for Hertz (twice that figure). There is no figure for the linear
   // dashpot, whose error grows faster with the damping: its 4e-3 is a regression bound set from
   // this code's own 2.87e-3 at e = 0.3 with 40 % margin (measured: Hertz 1.36e-3, 1.09e-3, 5.2e-4
   // and linear 2.87e-3, 1.54e-3, 5.1e-4 at e = 0.3, 0.5, 0.8); the order check is what ties both

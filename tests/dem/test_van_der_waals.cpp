@@ -10,7 +10,8 @@ TEST_CASE("van der Waals force follows A R*/(6 h^2), clamped at h_min and cut at
           "[dem][physics][cohesion]") {
   const dem::VanDerWaals::Params p{1e-19, 4e-10, 1e-5};
   const double r_star = 25e-6;  // two 100 um spheres
-  // DESIGN §1.1 reference: 2.6 uN at h = h_min = 0.4 nm (A d / (24 h^2) with d = 100 um).
+  // The fluidized-bed study's reference: 2.6 uN at h = h_min = 0.4 nm (A d / (24 h^2) with d = 100
+  // um).
   CHECK(dem::VanDerWaals::eval(p, -4e-10, r_star).f ==
         Approx(1e-19 * 100e-6 / (24 * 16e-20)).epsilon(1e-12));
   CHECK(dem::VanDerWaals::eval(p, -4e-10, r_star).f == Approx(2.6e-6).epsilon(0.01));

@@ -1,5 +1,5 @@
 // Equivalence test (not validation): the populations and wall forces after a run are bitwise the
-// same at 1 and 2 OpenMP threads (STYLE 5, 6).
+// same at 1 and 2 OpenMP threads.
 #include <omp.h>
 
 #include <catch2/catch.hpp>

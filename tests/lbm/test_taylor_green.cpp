@@ -1,6 +1,6 @@
 // Decaying 2-D Taylor-Green vortex, uniform in z, periodic: an exact Navier-Stokes solution whose
 // velocity decays as exp(-nu |k|^2 t), so its kinetic energy decays as exp(-2 nu |k|^2 t) with
-// |k|^2 = 2 (2 pi / N)^2 (Taylor & Green 1937; DESIGN 5).
+// |k|^2 = 2 (2 pi / N)^2 (Taylor & Green 1937).
 #include <catch2/catch.hpp>
 
 #include "lbm/lbm_solver.hpp"

@@ -1,5 +1,5 @@
-// SI <-> lattice conversions against their dimensional formulas and DESIGN §5's worked example,
-// and the stability checks firing where they should.
+// SI <-> lattice conversions against their dimensional formulas and the fluidized bed's worked
+// example, and the stability checks firing where they should.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -26,8 +26,9 @@ TEST_CASE("Lattice units: conversions round-trip and follow their dimensions", "
 
 TEST_CASE("Lattice units: the fluidized bed's 88 Pa needs dt of about 2 us at dx = 0.3 mm",
           "[lbm]") {
-  // DESIGN §5: Dp / (rho c_s^2) <= 1 % with Dp = 88 Pa, rho = 1.2, dx = 0.3 mm gives dt ~ 2 us;
-  // by hand 3 Dp dt^2 / (rho dx^2) = 0.01 gives dt = dx sqrt(0.01 * 1.2 / (3 * 88)) = 2.0226e-6 s.
+  // docs/physics.md: Dp / (rho c_s^2) <= 1 % with Dp = 88 Pa, rho = 1.2, dx = 0.3 mm gives dt ~ 2
+  // us; by hand 3 Dp dt^2 / (rho dx^2) = 0.01 gives dt = dx sqrt(0.01 * 1.2 / (3 * 88)) = 2.0226e-6
+  // s.
   const double dt = max_dt_for_pressure(88.0, 1.2, 3e-4, 0.01);
   CHECK(dt == Approx(3e-4 * std::sqrt(0.01 * 1.2 / (3 * 88.0))).epsilon(1e-12));
   CHECK(dt == Approx(2.0226e-6).epsilon(1e-4));  // the hand figure, to its 5 digits
@@ -38,7 +39,7 @@ TEST_CASE("Stability checks: tau, Mach and static pressure errors name the key a
           "[lbm]") {
   StabilityInput in;
   in.units = {3e-4, 2e-6, 1.2};
-  in.nu_si = 1.5e-5;  // air: tau - 1/2 = 3 nu dt / dx^2 = 1e-3, the fluidized bed's (DESIGN §5)
+  in.nu_si = 1.5e-5;  // air: tau - 1/2 = 3 nu dt / dx^2 = 1e-3, the fluidized bed's
   in.u_max_si = 1.0;
   in.dp_static_si = 88;
   const StabilityReport ok = check_stability(in);

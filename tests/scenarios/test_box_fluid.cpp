@@ -351,7 +351,7 @@ TEST_CASE("a gas faster than lattice Mach 0.2 is warned about once, and the run 
           "[scenarios][fluid]") {
   // The preset's channel with 3.33x its body force: plane Poiseuille's centre speed
   // g H^2 / (8 mu) = 8e-3 x 0.015^2 / (8 x 1.8e-5) = 0.0125 m/s, lattice 0.125 at dt = 0.01 s and
-  // dx = 1 mm, Mach 0.217, past the warning's 0.2 (DESIGN 5 keeps 0.17) while the flow develops;
+  // dx = 1 mm, Mach 0.217, past the warning's 0.2 (presets keep 0.17) while the flow develops;
   // the preset's own 3.75 mm/s (Mach 0.065) is not warned about. The declared max_speed (5 mm/s)
   // is not what is checked: the cells' speeds are.
   const std::string fast = tmpdir("mach_fast"), slow = tmpdir("mach_slow");

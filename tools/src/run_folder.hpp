@@ -15,7 +15,7 @@ class ToolError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-inline constexpr int kToolErrorExit = 2;  // the same code as lbdem's input errors (DESIGN §3)
+inline constexpr int kToolErrorExit = 2;  // the same code as lbdem's input errors
 
 /// A CSV of numbers with a header line, stored by column.
 struct Table {
