@@ -1,8 +1,8 @@
 #pragma once
-// Drag on a coarse-grained parcel (DESIGN 2.2; coarse_grain/drag_scaling.hpp): the parcel carries
-// l^3 originals, each dragged as an original at the same eps and slip, so
-// F_parcel = l^3 F_d(d_parcel / l). The parcel's drag per unit mass, hence its relaxation time and
-// terminal velocity, is the original's (Sakai & Koshizuka 2009, Chem. Eng. Sci. 64, 533).
+// Drag on a coarse-grained parcel (docs/physics.md, Drag laws; coarse_grain/drag_scaling.hpp): the
+// parcel carries l^3 originals, each dragged as an original at the same eps and slip, so F_parcel =
+// l^3 F_d(d_parcel / l). The parcel's drag per unit mass, hence its relaxation time and terminal
+// velocity, is the original's (Sakai & Koshizuka 2009, Chem. Eng. Sci. 64, 533).
 #include "coarse_grain/drag_scaling.hpp"
 #include "core/error.hpp"
 #include "coupling/drag/drag_law.hpp"

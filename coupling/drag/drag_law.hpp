@@ -1,6 +1,6 @@
 #pragma once
-// The drag-law contract of the unresolved coupling (DESIGN 2, 2.2): one value type per law, one
-// header per law beside this one, the run-time choice in drag_model.hpp.
+// The drag-law contract of the unresolved coupling (docs/physics.md, Drag laws): one value type per
+// law, one header per law beside this one, the run-time choice in drag_model.hpp.
 //
 // Conventions shared by every law here:
 //  - Velocities. The caller passes the INTERSTITIAL slip u = u_f - u_p (u_f the local gas velocity,

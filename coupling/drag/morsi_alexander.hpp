@@ -1,5 +1,5 @@
 #pragma once
-// Isolated sphere, piecewise fit of the standard drag curve (the jet-mill law, DESIGN 1.3).
+// Isolated sphere, piecewise fit of the standard drag curve (the jet-mill law, docs/studies.md).
 #include "coupling/drag/drag_law.hpp"
 
 #include <array>

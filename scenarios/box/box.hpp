@@ -6,11 +6,11 @@
 //
 // With a [fluid] table the box also holds a gas (lbm::LbmSolver, fluid_config.hpp), advanced
 // alongside the particles: an integer number of gas steps per DEM step, or of DEM steps per gas
-// step (SubCycle), the gas stepping first in each cycle (DESIGN §2.1). With [coupling] as well
-// (coupling_config.hpp) gas and particles exchange momentum (coupling/coupler.hpp) once per
-// exchange interval of whole cycles: the gas runs the interval's steps first, then the DEM. A
-// box with [fluid] and no particles, fills or [[materials]] is a pure gas run: the DEM then only
-// keeps the clock, one DEM step per gas step, and takes no [dem] table.
+// step (SubCycle), the gas stepping first in each cycle (docs/physics.md, Coupled time step). With
+// [coupling] as well (coupling_config.hpp) gas and particles exchange momentum
+// (coupling/coupler.hpp) once per exchange interval of whole cycles: the gas runs the interval's
+// steps first, then the DEM. A box with [fluid] and no particles, fills or [[materials]] is a pure
+// gas run: the DEM then only keeps the clock, one DEM step per gas step, and takes no [dem] table.
 #include <functional>
 #include <memory>
 #include <random>

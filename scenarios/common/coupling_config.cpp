@@ -88,7 +88,7 @@ void coupling_banner(Log& log, const CouplingConfig& c, const FluidConfig& fluid
               "(" + to_text(s.kernel_width / dmax) + " parcel diameters, " +
                   to_text(s.kernel_width / fluid.dx) + " cells)");
   // Maxey & Patel: the parcel's own reaction slows the gas at it by about 0.28 D / sigma of the
-  // slip, l^3 times more for a parcel of l^3 originals (DESIGN §5).
+  // slip, l^3 times more for a parcel of l^3 originals (docs/physics.md, Coupling kernel).
   log.derived("self-induced slip error", 0.28 * l * l * l * d_o / s.kernel_width, "",
               "(dilute limit 0.28 l^3 d / sigma, two-way; screened in a dense bed)");
   const ExchangeInterval e = exchange_interval(sub, c.exchange_every);

@@ -143,7 +143,8 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   } else if (c.collision == "bgk") {
     // BGK's linearly stable range of lattice speeds shrinks as tau -> 1/2 (Sterling & Chen 1996,
     // J. Comput. Phys. 123, 196); TRT keeps its odd rate away from 2 through the magic parameter
-    // and runs far closer (DESIGN §5). BGK gets 50 times TRT's margin: tau >= 0.505.
+    // and runs far closer (docs/physics.md, Coupling kernel). BGK gets 50 times TRT's margin: tau
+    // >= 0.505.
     tau_margin = 5e-3;
   } else {
     c.smagorinsky = fluid.get("smagorinsky", lbm::RegularizedLes::kSmagorinskyDefault,
@@ -176,7 +177,8 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                   {0, 0.3, true, false, "give a lattice velocity in (0, 0.3], e.g. 0.1"});
     c.dt = lbm::dt_for_lattice_velocity(c.max_speed, c.dx, ul);
     c.dt_from = "lattice velocity " + to_text(ul) + " at max_speed";
-    // DESIGN §5: a static Dp of more than 1 % of rho c_s^2 limits dt below what Mach allows.
+    // docs/physics.md, Lattice units and limits: a static Dp of more than 1 % of rho c_s^2 limits
+    // dt below what Mach allows.
     if (c.pressure_difference > 0) {
       const double dt_p = lbm::max_dt_for_pressure(c.pressure_difference, c.density, c.dx, 0.01);
       if (dt_p < c.dt) c.dt = dt_p, c.dt_from = "Dp / (rho c_s^2) = 1 %";

@@ -2,8 +2,9 @@
 // The [fluid] part of a scenario config: the gas in SI (density, dynamic viscosity, cell size,
 // time step or target lattice velocity, largest expected speed and static pressure difference,
 // collision operator, body force, initial velocity, faces), checked with lbm::check_stability
-// (tau, lattice Mach, Dp / (rho c_s^2); DESIGN §5) and turned into lbm::LbmSettings. Every value
-// stays in SI here; lattice values only appear in the LbmSettings handed to the solver (STYLE §4).
+// (tau, lattice Mach, Dp / (rho c_s^2); docs/physics.md, Lattice units and limits) and turned into
+// lbm::LbmSettings. Every value stays in SI here; lattice values only appear in the LbmSettings
+// handed to the solver (STYLE §4).
 //
 // Keys (all under [fluid]):
 //   density [kg/m^3], viscosity (dynamic) [Pa s], dx [m] (each box edge a whole number of cells),
@@ -84,8 +85,9 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        const std::array<bool, 3>& box_periodic, const Vec3& gravity);
 
 /// How the gas and the DEM share time: an integer number of gas steps per DEM step or of DEM
-/// steps per gas step (DESIGN §2.1). The gas step is the one the config fixes (it sets tau, Mach
-/// and Dp / (rho c_s^2)); the DEM step is only ever shortened to fit (see conform_dem_step).
+/// steps per gas step (docs/physics.md, Coupled time step). The gas step is the one the config
+/// fixes (it sets tau, Mach and Dp / (rho c_s^2)); the DEM step is only ever shortened to fit (see
+/// conform_dem_step).
 struct SubCycle {
   int gas_per_dem = 1;                  // > 1: the DEM step holds this many gas steps
   int dem_per_gas = 1;                  // > 1: the gas step holds this many DEM steps
@@ -93,7 +95,8 @@ struct SubCycle {
   /// DEM steps per coupling cycle: instants where both solvers stand at the same time.
   std::int64_t cycle() const { return dem_per_gas; }
   /// Gas steps to take before DEM step number `dem_step` (0-based): the gas leads, so the DEM
-  /// steps of a cycle see the gas at the cycle's end (DESIGN §2.1 order: LBM, then DEM).
+  /// steps of a cycle see the gas at the cycle's end (docs/physics.md, Coupled time step: LBM, then
+  /// DEM).
   int gas_steps_before(std::int64_t dem_step) const {
     return dem_per_gas > 1 ? (dem_step % dem_per_gas == 0 ? 1 : 0) : gas_per_dem;
   }
@@ -102,7 +105,7 @@ struct SubCycle {
 /// with m = ceil(dt_gas / dt_dem). Both only shorten the DEM step, so its t_c/20 check still holds.
 SubCycle conform_dem_step(double dem_dt, double gas_dt);
 
-/// Derived gas numbers for the start-up banner (DESIGN §3) and the stability warnings.
+/// Derived gas numbers for the start-up banner (docs/user-guide.md) and the stability warnings.
 void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub);
 
 }  // namespace lbdem::scenarios

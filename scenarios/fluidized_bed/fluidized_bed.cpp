@@ -161,7 +161,8 @@ void FluidizedBedScenario::bed_banner(Log& log) const {
   log.derived("parcels across the bed", f.cells[0] * f.dx / d_parcel, "",
               "x " + to_text(f.cells[1] * f.dx / d_parcel) + " (width / parcel diameter)");
   if (hamaker_original_ > 0) {
-    // Bond number F_vdW(h_min) / (m g), equal spheres: F = A d / (24 h_min^2) (DESIGN §1.1).
+    // Bond number F_vdW(h_min) / (m g), equal spheres: F = A d / (24 h_min^2) (docs/physics.md, Van
+    // der Waals cohesion).
     const double m_o = rho_p * kPi * d_o * d_o * d_o / 6;
     const double bo = hamaker_original_ * d_o / (24 * h_min_ * h_min_) / (m_o * g.norm());
     const double m_p = rho_p * kPi * d_parcel * d_parcel * d_parcel / 6;

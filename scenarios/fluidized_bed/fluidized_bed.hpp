@@ -1,7 +1,7 @@
 #pragma once
-// The gas-fluidized bed (DESIGN §1.1; Sakai's coarse-grain model for fine cohesive powders): a box
-// with a gas inlet (distributor) at the bottom and a pressure outlet at the top, particles poured
-// and settled, the gas started or ramped, two-way coupled (BoxScenario with [fluid] and
+// The gas-fluidized bed (docs/studies.md; Sakai's coarse-grain model for fine cohesive powders): a
+// box with a gas inlet (distributor) at the bottom and a pressure outlet at the top, particles
+// poured and settled, the gas started or ramped, two-way coupled (BoxScenario with [fluid] and
 // [coupling]). It adds what the study compares, in timeseries.csv:
 //   bed_height_m      the height above the distributor below which bed.height_fraction (0.95) of
 //                     the particle volume lies,

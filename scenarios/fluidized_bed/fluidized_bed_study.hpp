@@ -1,6 +1,6 @@
 #pragma once
-// `./lbdem study fluidized_bed`: the original-against-coarse-grain series of DESIGN §1.1 (issue 10
-// §3): cohesionless CG 1-4 and wider CG 3, 4 beds; at Bond number 10 CG 1 and CG 2, 4 under the
+// `./lbdem study fluidized_bed`: the original-against-coarse-grain series (docs/studies.md):
+// cohesionless CG 1-4 and wider CG 3, 4 beds; at Bond number 10 CG 1 and CG 2, 4 under the
 // l^2 (tensile strength) and l^3 (Bond number) cohesion rules; CG 1 at Bond numbers 1 and 30. Each
 // case runs (or resumes) into studies/fluidized_bed/NAME; then bed height and pressure drop of all
 // cases are compared over the fluidized window (from 0.05 s after the ramp ends): overlay and power

@@ -1,8 +1,9 @@
 // Drag laws of the unresolved coupling checked against references outside the law code: the
 // Stokes drag 3 pi mu d u, the Schiller-Naumann settling velocity and minimum fluidization of the
-// data README (for DESIGN 1.1's 100 um, 1500 kg/m^3 particle in air), Ergun's pressure drop, Wen &
-// Yu's U_mf correlation, the papers' formulas re-evaluated here (Beetstra, Di Felice), Morsi &
-// Alexander's published constants, and the coarse-grain rule of coarse_grain/drag_scaling.hpp.
+// data README (for the fluidized-bed study's 100 um, 1500 kg/m^3 particle in air), Ergun's pressure
+// drop, Wen & Yu's U_mf correlation, the papers' formulas re-evaluated here (Beetstra, Di Felice),
+// Morsi & Alexander's published constants, and the coarse-grain rule of
+// coarse_grain/drag_scaling.hpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -18,7 +19,7 @@ using namespace lbdem::coupling;
 using Catch::Matchers::Contains;
 
 namespace {
-// DESIGN 1.1 defaults, as in the data README's reference table.
+// The fluidized-bed study's defaults, as in the data README's reference table.
 constexpr double kRhoF = 1.2;     // air [kg/m^3]
 constexpr double kMu = 1.8e-5;    // air [Pa s]
 constexpr double kD = 100e-6;     // particle diameter [m]
