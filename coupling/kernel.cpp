@@ -24,6 +24,16 @@ double triweight_variance(double r) {
   return s2 / s0;
 }
 
+// The cell a tap at coordinate j (possibly outside 0..n-1) reads on a non-periodic axis: the
+// faces at -1/2 and n - 1/2 are mirrors, so j is reflected until it lies in the box (a kernel
+// wider than the box reflects more than once). The images of cell i are i + 2 n m and
+// -1 - i + 2 n m, so the mirrored filter is symmetric and sums to 1 along rows and columns.
+int fold(int j, int n) {
+  const int p = 2 * n;
+  j = ((j % p) + p) % p;
+  return j < n ? j : p - 1 - j;
+}
+
 // A plane mask for ParticleKernel::filter: null (every plane) before the first locate().
 const std::uint8_t* planes(const std::vector<std::uint8_t>& mask) {
   return mask.empty() ? nullptr : mask.data();
@@ -88,18 +98,49 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
     list.assign(std::size_t(n), {});
     for (int i = 0; i < n; ++i)
       for (int k = -half_; k <= half_; ++k) {
-        int j = i + k;
-        if (grid_.periodic(a))
-          j = ((j % n) + n) % n;  // a kernel wider than the box wraps more than once
-        else if (j < 0 || j >= n)
-          continue;
+        // A kernel wider than the box wraps, or reflects, more than once.
+        const int j = grid_.periodic(a) ? (((i + k) % n) + n) % n : fold(i + k, n);
         list[std::size_t(i)].push_back({j, taps_[std::size_t(std::abs(k))]});
       }
   }
-  std::vector<double> m(gas_.begin(), gas_.end()), z;
-  filter(m, z, 1);
-  inv_z_.resize(ncell);
-  for (std::size_t c = 0; c < ncell; ++c) inv_z_[c] = z[c] > 0 ? 1.0 / z[c] : 0.0;
+  balance();
+}
+
+void ParticleKernel::balance() {
+  const auto ncell = std::size_t(grid_.cells());
+  // The mirrored filter G is symmetric with unit row and column sums: on a box without solid
+  // cells d = 1 (post = 1, pre = 1 / sum of the taps). Solid cells take rows and columns out of
+  // it; d then solves d (G m d) = 1 on the gas cells (symmetric Sinkhorn-Knopp balancing by
+  // Knight's iteration d <- sqrt(d / G m d), P. A. Knight 2008, SIAM J. Matrix Anal. Appl. 30,
+  // 261), which converges linearly, about a decade per 3 iterations for these kernels.
+  std::vector<double> d(ncell, 1.0), in, gd;
+  const bool any_solid = std::find(gas_.begin(), gas_.end(), 0) != gas_.end();
+  balance_error_ = 0;
+  for (int it = 0;; ++it) {
+    in.resize(ncell);
+    const bool par = grid_.cells() >= kMinParallelCells;
+#pragma omp parallel for schedule(static) if (par)
+    for (std::size_t c = 0; c < ncell; ++c) in[c] = gas_[c] ? d[c] : 0.0;
+    filter(in, gd, 1);
+    double err = 0;
+#pragma omp parallel for schedule(static) reduction(max : err) if (par)
+    for (std::size_t c = 0; c < ncell; ++c)
+      if (gas_[c]) err = std::max(err, std::abs(d[c] * gd[c] - 1.0));
+    balance_error_ = err;
+    if (!any_solid || err <= kBalanceTolerance || it == kBalanceIterations) break;
+#pragma omp parallel for schedule(static) if (par)
+    for (std::size_t c = 0; c < ncell; ++c)
+      if (gas_[c]) d[c] = std::sqrt(d[c] / gd[c]);
+  }
+  // pre = 1 / (G m d) normalises every column exactly (each source cell's share sums to 1 to
+  // round-off, whether or not the balance converged); on the gas cells it equals d to the
+  // balance error, so that the rows sum to 1 as well.
+  pre_.resize(ncell);
+  post_.resize(ncell);
+  for (std::size_t c = 0; c < ncell; ++c) {
+    pre_[c] = gd[c] > 0 ? 1.0 / gd[c] : 0.0;
+    post_[c] = gas_[c] ? d[c] : 0.0;
+  }
 }
 
 std::vector<std::uint8_t> ParticleKernel::solid_mask(const lbm::FlagField& flags) {
@@ -147,21 +188,19 @@ void ParticleKernel::filter_axis(const std::vector<double>& in, std::vector<doub
       const int z = active[std::size_t(a)];
       const std::size_t at = std::size_t(cell(0, y, z)) * std::size_t(nc);
       double* o = out.data() + at;
-      // The row with H cells of halo on each side (wrapped, or zero beyond a non-periodic face:
-      // the taps there are the ones the tap list leaves out), so that each tap is one
-      // contiguous, vectorisable sweep over all components; taps are added in the same order,
-      // k = -H..H.
+      // The row with H cells of halo on each side (wrapped, or mirrored at a non-periodic face,
+      // as the tap list reads them), so that each tap is one contiguous, vectorisable sweep over
+      // all components; taps are added in the same order, k = -H..H.
       thread_local std::vector<double> pad;
       pad.resize(len + 2 * halo);
       const double* row = in.data() + at;
       std::copy(row, row + len, pad.begin() + std::ptrdiff_t(halo));
       for (int i = 1; i <= h; ++i)
         for (int m = 0; m < nc; ++m) {
-          double lo = 0, hi = 0;
-          if (wrap_x) {
-            lo = row[std::size_t(((-i % nx) + nx) % nx) * std::size_t(nc) + std::size_t(m)];
-            hi = row[std::size_t((nx - 1 + i) % nx) * std::size_t(nc) + std::size_t(m)];
-          }
+          const int jl = wrap_x ? ((-i % nx) + nx) % nx : fold(-i, nx);
+          const int jh = wrap_x ? (nx - 1 + i) % nx : fold(nx - 1 + i, nx);
+          const double lo = row[std::size_t(jl) * std::size_t(nc) + std::size_t(m)];
+          const double hi = row[std::size_t(jh) * std::size_t(nc) + std::size_t(m)];
           pad[std::size_t(h - i) * std::size_t(nc) + std::size_t(m)] = lo;
           pad[std::size_t(nx - 1 + h + i) * std::size_t(nc) + std::size_t(m)] = hi;
         }
@@ -206,10 +245,15 @@ void ParticleKernel::filter_planes(const std::vector<double>& in, std::vector<do
         axpy(o, p + std::size_t(s) * row, std::size_t(ny - s) * row, g);
         axpy(o + std::size_t(ny - s) * row, p, std::size_t(s) * row, g);
       } else {
+        // The rows whose neighbour lies in the box in one run, the others a row at a time from
+        // their mirror images (each cell still takes one term per k).
         const int y0 = std::max(0, -k), y1 = std::min(ny, ny - k);
         if (y0 < y1)
           axpy(o + std::size_t(y0) * row, p + std::size_t(y0 + k) * row, std::size_t(y1 - y0) * row,
                g);
+        for (int y = 0; y < ny; ++y)
+          if (y < y0 || y >= y1)
+            axpy(o + std::size_t(y) * row, p + std::size_t(fold(y + k, ny)) * row, row, g);
       }
     }
   }
@@ -289,7 +333,7 @@ void ParticleKernel::locate(std::span<const Vec3> positions) {
         q[a] = lo[std::size_t(a)] + c[a];
         if (q[a] == grid_.extent(a)) q[a] = 0;  // periodic wrap (a non-periodic n is not ok)
       }
-      if (inv_z_[std::size_t(cell(q[0], q[1], q[2]))] == 0) continue;  // no gas within reach
+      if (pre_[std::size_t(cell(q[0], q[1], q[2]))] == 0) continue;  // no gas within reach
       const double wc =
           (c[0] ? f[0] : 1 - f[0]) * (c[1] ? f[1] : 1 - f[1]) * (c[2] ? f[2] : 1 - f[2]);
       w[std::size_t(corner)] = wc;
@@ -400,7 +444,7 @@ void ParticleKernel::gather_sources(const std::vector<double>& qs, std::vector<d
           src[c * NC + std::size_t(a)] += w * qs[std::size_t(k) * NC + std::size_t(a)];
       }
     }
-    const double* iz = inv_z_.data() + std::size_t(z) * plane;
+    const double* iz = pre_.data() + std::size_t(z) * plane;
     for (std::size_t c = 0; c < plane; ++c)
       for (int a = 0; a < NC; ++a) s[c * NC + std::size_t(a)] *= iz[c];
   }
@@ -459,13 +503,13 @@ void ParticleKernel::smooth(std::vector<double>& in, std::vector<double>& v, int
   const auto ncell = std::size_t(grid_.cells());
   const auto m = std::size_t(nc);
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < ncell; ++c)
-    if (!gas_[c])
-      for (std::size_t a = 0; a < m; ++a) in[c * m + a] = 0.0;
+  for (std::size_t c = 0; c < ncell;
+       ++c)  // solid cells may hold anything (NaN too): set, not scaled
+    for (std::size_t a = 0; a < m; ++a) in[c * m + a] = gas_[c] ? post_[c] * in[c * m + a] : 0.0;
   filter(in, v, nc, planes(reach_), planes(occupied_));
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < ncell; ++c)
-    for (std::size_t a = 0; a < m; ++a) v[c * m + a] *= inv_z_[c];
+    for (std::size_t a = 0; a < m; ++a) v[c * m + a] *= pre_[c];
 }
 
 template <int NC>
@@ -488,7 +532,7 @@ void ParticleKernel::deposit(std::span<const double> q, std::vector<double>& out
   out.resize(std::size_t(grid_.cells()));
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
-  for (std::size_t c = 0; c < out.size(); ++c) out[c] = gas_[c] ? dep[c] * inv_v : 0.0;
+  for (std::size_t c = 0; c < out.size(); ++c) out[c] = post_[c] * dep[c] * inv_v;
 }
 
 void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const {
@@ -499,7 +543,7 @@ void ParticleKernel::deposit(std::span<const Vec3> q, std::vector<Vec3>& out) co
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < ncell; ++c)
-    for (int a = 0; a < 3; ++a) out[c][a] = gas_[c] ? dep[3 * c + std::size_t(a)] * inv_v : 0.0;
+    for (int a = 0; a < 3; ++a) out[c][a] = post_[c] * dep[3 * c + std::size_t(a)] * inv_v;
 }
 
 void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
@@ -520,9 +564,8 @@ void ParticleKernel::deposit(std::span<const double> q, std::span<const Vec3> v,
   const double inv_v = 1.0 / cell_volume();
 #pragma omp parallel for schedule(static) if (grid_.cells() >= kMinParallelCells)
   for (std::size_t c = 0; c < ncell; ++c) {
-    out_q[c] = gas_[c] ? dep[4 * c] * inv_v : 0.0;
-    for (int a = 0; a < 3; ++a)
-      out_v[c][a] = gas_[c] ? dep[4 * c + 1 + std::size_t(a)] * inv_v : 0.0;
+    out_q[c] = post_[c] * dep[4 * c] * inv_v;
+    for (int a = 0; a < 3; ++a) out_v[c][a] = post_[c] * dep[4 * c + 1 + std::size_t(a)] * inv_v;
   }
 }
 
@@ -535,7 +578,8 @@ const std::vector<double>& ParticleKernel::smoothed(const double* field, int nc)
   return work_out_;
 }
 
-// Transpose of deposit(): v(c) = sum_c' m(c') G(c' - c) field(c') / Z(c), then trilinear weights.
+// Transpose of deposit(): v(c) = pre(c) sum_c' G(c' - c) post(c') field(c'), then trilinear
+// weights.
 void ParticleKernel::interpolate(std::span<const double> field, std::vector<double>& out) const {
   require_size(field.size(), std::size_t(grid_.cells()), "interpolated field");
   out.resize(particle_count());

@@ -8,20 +8,28 @@
 // Sun & Xiao 2015, Int. J. Multiphase Flow 77, 142, with an explicit compact filter in place of
 // their diffusion step): a particle first shares its quantity among the 8 cells around it with
 // trilinear (cloud-in-cell) weights w_c, then each such source cell c spreads its share over the
-// gas cells c' with the separable filter G(c' - c) = g(dx) g(dy) g(dz), renormalised over the gas
-// cells it reaches:
-//   K_p(c') = sum_c w_c(x_p) m(c') G(c' - c) / Z(c),  Z(c) = sum_c'' m(c'') G(c'' - c),
-// m = 1 on gas cells, 0 on solid cells and outside a non-periodic box (they receive nothing).
-// sum_c' K_p(c') = 1 (to round-off) wherever a particle is, periodic axes wrap (more than once if
-// the kernel is wider than the box), and a particle reads a field back with the same K_p, so
-// deposition and interpolation are transposes of each other. K_p is continuous and piecewise
-// multilinear in x_p, so eps and the force density follow a moving particle without jumps.
-// g is the triweight (1 - (k/R)^2)^3 sampled at the integer offsets |k| < R: C2 and compactly
-// supported, unlike a Gaussian truncated at 3 sigma (whose cut-off steps are 1 % of the peak), and
-// symmetric, so a linear field is interpolated exactly away from walls (sum_k k g(k) = 0 and the
-// trilinear weights reproduce x_p). R is set so that the kernel's variance per axis, averaged over
-// the position within a cell, is sigma^2: var(g) + 1/6 (the trilinear part adds f(1 - f)).
-// Cost, and why two steps rather than a kernel evaluated per particle: 8 weights per particle
+// gas cells c' with the separable filter G(c' - c) = g(dx) g(dy) g(dz):
+//   K_p(c') = sum_c w_c(x_p) post(c') G(c' - c) pre(c).
+// Periodic axes wrap; the faces of a non-periodic axis are mirrors: a tap beyond a face reads the
+// cell it reflects to (more than once if the kernel is wider than the box), so G stays symmetric
+// with unit row and column sums. Solid cells (m = 0) receive nothing: post = m d and
+// pre = 1 / (G m d), with d the symmetric balancing d (G m d) = 1 on the gas cells (d = 1 without
+// solid cells). So each column sums to 1 exactly, sum_c' K_p(c') = 1 to round-off wherever a
+// particle is (volume and force conserved at walls, solids and faces), and each row sums to 1 to
+// the balance error: a bed of uniform solid fraction deposits a uniform field up to walls and
+// solids. The alternative, renormalising each source cell over the gas cells it reaches
+// (G / Z(c)), conserves too but piles the share of the cells next to a wall onto the cells a
+// little further in: on a settled bed in a 3-cell-thin walled box (test_kernel_walls.cpp) it read
+// a solid fraction of 0.68 in the middle layer and 0.52 at the walls, where binning the beads
+// gives 0.58 and 0.545; this kernel reads 0.55 in both. A particle reads a field back with the same
+// K_p, so deposition and interpolation are transposes of each other. K_p is continuous and
+// piecewise multilinear in x_p, so eps and the force density follow a moving particle without
+// jumps. g is the triweight (1 - (k/R)^2)^3 sampled at the integer offsets |k| < R: C2 and
+// compactly supported, unlike a Gaussian truncated at 3 sigma (whose cut-off steps are 1 % of the
+// peak), and symmetric, so a linear field is interpolated exactly away from walls (sum_k k g(k) = 0
+// and the trilinear weights reproduce x_p). R is set so that the kernel's variance per axis,
+// averaged over the position within a cell, is sigma^2: var(g) + 1/6 (the trilinear part adds f(1 -
+// f)). Cost, and why two steps rather than a kernel evaluated per particle: 8 weights per particle
 // and quantity, plus 3 (2H + 1) taps per cell and component (H = ceil(R) - 1: 5 taps at
 // sigma = dx, 11 at 2 dx), whatever the number of particles. A per-particle 3-D kernel of the same
 // reach costs (2H + 2)^3 per particle (1728 cells at sigma = 2 dx), which in a dense bed (tens of
@@ -50,17 +58,18 @@
 namespace lbdem::coupling {
 
 /// Default kernel width sigma per parcel diameter D, used as sigma = max(dx, 2 D). The particle's
-/// own reaction slows the gas where it sits by about 0.28 D / sigma of the slip (DESIGN §5,
-/// Maxey & Patel 2001, Int. J. Multiphase Flow 27, 1603, force coupling: u_self = F / (6 pi mu
-/// sqrt(pi) sigma) against Stokes drag 3 pi mu D u_slip), 14 % at sigma = 2 D; the Poisson noise of
-/// the solid fraction of a random bed, sd(phi)/phi = sqrt(V_p int K^2 / phi) = sqrt(0.524 D^3 /
-/// (49.7 sigma^3 phi)) for this kernel (49.7 = 1 / int K^2 in units of sigma^3; a Gaussian
-/// has 44.5), is 4.7 % at phi = 0.6 and sigma = 2 D (13 % at sigma = D). The floor dx keeps the
-/// kernel resolved (5 taps at sigma = dx) and the eps history of a moving particle smooth (see the
-/// test); for D <= dx / 2 it already gives sigma >= 2 D. Wider kernels smear the bed surface and
-/// wall layers over about 2 sigma. For a coarse-grained parcel of l^3 originals (D = l d_o) the
-/// drag, and so the error, is l^3 times one original's: 0.28 l^3 d_o / sigma, 0.14 l^2 at the
-/// default; keeping 14 % needs sigma = 2 l^2 D, which the caller may pass (DESIGN §5).
+/// own reaction slows the gas where it sits by about 0.28 D / sigma of the slip (docs/physics.md,
+/// Coupling kernel; Maxey & Patel 2001, Int. J. Multiphase Flow 27, 1603, force coupling: u_self =
+/// F / (6 pi mu sqrt(pi) sigma) against Stokes drag 3 pi mu D u_slip), 14 % at sigma = 2 D; the
+/// Poisson noise of the solid fraction of a random bed, sd(phi)/phi = sqrt(V_p int K^2 / phi) =
+/// sqrt(0.524 D^3 / (49.7 sigma^3 phi)) for this kernel (49.7 = 1 / int K^2 in units of sigma^3; a
+/// Gaussian has 44.5), is 4.7 % at phi = 0.6 and sigma = 2 D (13 % at sigma = D). The floor dx
+/// keeps the kernel resolved (5 taps at sigma = dx) and the eps history of a moving particle smooth
+/// (see the test); for D <= dx / 2 it already gives sigma >= 2 D. Wider kernels smear the bed
+/// surface and wall layers over about 2 sigma. For a coarse-grained parcel of l^3 originals (D = l
+/// d_o) the drag, and so the error, is l^3 times one original's: 0.28 l^3 d_o / sigma, 0.14 l^2 at
+/// the default; keeping 14 % needs sigma = 2 l^2 D, which the caller may pass (docs/physics.md,
+/// Coupling kernel).
 inline constexpr double kDefaultWidthPerDiameter = 2.0;
 inline double default_kernel_width(double dx, double parcel_diameter) {
   const double w = kDefaultWidthPerDiameter * parcel_diameter;
@@ -112,6 +121,13 @@ class ParticleKernel {
   /// axis are taken at the box face; periodic axes wrap. O(N) with a serial counting sort.
   void locate(std::span<const Vec3> positions);
   std::size_t particle_count() const { return weight_.size(); }
+  /// Largest |d (G m d) - 1| over the gas cells after the balancing: how far a uniform source
+  /// field deposits off uniform (0 without solid cells).
+  double balance_error() const { return balance_error_; }
+  /// The balancing stops below kBalanceTolerance or after kBalanceIterations filter passes.
+  static constexpr double kBalanceTolerance = 1e-12;
+  static constexpr int kBalanceIterations = 400;
+
   /// Particles with no gas cell within the kernel (buried in a solid block thicker than the
   /// kernel): they deposit nothing and read 0. The first is the lowest index, -1 if none.
   std::size_t unmapped_count() const { return unmapped_; }
@@ -133,7 +149,9 @@ class ParticleKernel {
 
   /// Values at the particles of a cell field (compact order; solid cells are not read):
   /// out_p = sum_c K_p(c) field(c). Exact for a constant field; for a linear one wherever the
-  /// kernel reaches only gas cells (symmetric taps, trilinear weights).
+  /// kernel reaches neither a face nor a solid cell (symmetric taps, trilinear weights) and the
+  /// balancing leaves d = 1 (no solid cells in the grid; near solids d decays to 1 within a few
+  /// kernel widths).
   void interpolate(std::span<const double> field, std::vector<double>& out) const;
   void interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const;
   /// Both interpolations at once (one filter over four components, bitwise the same as two calls).
@@ -183,7 +201,7 @@ class ParticleKernel {
   // an interpolation samples only those planes.
   void filter(std::vector<double>& in, std::vector<double>& out, int nc,
               const std::uint8_t* xy = nullptr, const std::uint8_t* z = nullptr) const;
-  // Source cells of NC components: src(c, a) = sum_p w_c(x_p) q_p[a] / Z(c), the terms of each
+  // Source cells of NC components: src(c, a) = pre(c) sum_p w_c(x_p) q_p[a], the terms of each
   // cell's 8 bins added corner by corner; qs holds the NC values of each particle in bin order.
   template <int NC>
   void gather_sources(const std::vector<double>& qs, std::vector<double>& src) const;
@@ -193,7 +211,8 @@ class ParticleKernel {
   // As sample, divided by the gas weight.
   template <int NC>
   void sample_local(const double* field, double* out) const;
-  // v = (G * (m in)) / Z, the field each source cell reads (in, of nc components, is overwritten).
+  // v = pre (G * (post in)), the field each source cell reads (in, of nc components, is
+  // overwritten).
   void smooth(std::vector<double>& in, std::vector<double>& v, int nc) const;
   // smooth() of a copy of field (nc values per cell), in work_out_.
   const std::vector<double>& smoothed(const double* field, int nc) const;
@@ -209,10 +228,15 @@ class ParticleKernel {
   double radius_ = 0;  // triweight half-width R [cells]
   int half_ = 0;       // H
   std::vector<double> taps_;
+  // Sets pre_ and post_ (and balance_error_) from the mask and the filter.
+  void balance();
+
   std::vector<std::uint8_t> gas_;  // m per cell
-  std::vector<double> inv_z_;      // 1 / Z per cell, 0 where Z = 0
+  std::vector<double> pre_;        // 1 / (G m d) per source cell, 0 where no gas is in reach
+  std::vector<double> post_;       // m d per receiving cell
+  double balance_error_ = 0;
   // Per axis and coordinate i: the (neighbour coordinate, tap) pairs of the filter, k = -H..H,
-  // wrapped on periodic axes, without those outside a non-periodic box.
+  // wrapped on periodic axes, mirrored at the faces of a non-periodic one.
   struct Tap {
     int j;
     double g;
