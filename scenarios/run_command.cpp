@@ -146,13 +146,20 @@ int run_scenario(const RunOptions& opt) {
   const ScenarioEntry* entry = nullptr;
   if (resume && name.empty() && fs::exists(opt.resume + "/config.toml"))
     name = Config::from_file(opt.resume + "/config.toml").get_string("scenario", "box");
+  // A config file names its scenario: `run --config FILE` needs no name.
+  if (!resume && name.empty() && !opt.config.empty() && fs::is_regular_file(opt.config))
+    name = Config::from_file(opt.config).get_string("scenario", "");
   for (const auto& s : scenarios())
     if (s.name == name) entry = &s;
   if (!entry) {
     std::vector<std::string> names;
     for (const auto& s : scenarios()) names.push_back(s.name);
+    if (name.empty())
+      throw InputError("scenario", "(none)", "no scenario named",
+                       "name one (./lbdem run SCENARIO, see --list) or write scenario = \"...\" "
+                       "at the top of the config file");
     throw InputError(
-        "scenario", name.empty() ? "(none)" : name, "unknown scenario",
+        "scenario", name, "unknown scenario",
         names.empty() ? "" : "did you mean '" + nearest(name, names) + "'? (./lbdem run --list)");
   }
   const std::string file =
@@ -170,7 +177,12 @@ int run_scenario(const RunOptions& opt) {
                        "start a new run (--config " + file + ") to change anything else");
     cfg.set_override(s);
   }
-  cfg.get_string("scenario", name);  // recorded, so the resolved config names its scenario
+  // Recorded, so the resolved config names its scenario; a file written for another one is
+  // refused rather than read with the wrong scenario's defaults.
+  if (const std::string in_file = cfg.get_string("scenario", name); in_file != name)
+    throw InputError("scenario", in_file,
+                     "the config file is for this scenario, the command names '" + name + "'",
+                     "drop the scenario name from the command, or use that scenario's config");
   // Wall time per phase, printed at the end of log.txt (core/phase_timer.hpp).
   PhaseTimer::global().enable(cfg.section("run").get_bool("phase_timers", true));
   if (opt.threads > 0) omp_set_num_threads(opt.threads);

@@ -90,6 +90,35 @@ TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[sc
   CHECK(cli("run box --set dem.dtt=1e-6").err.find("did you mean 'dem.dt'") != std::string::npos);
 }
 
+TEST_CASE("run --config FILE takes the scenario the file names", "[scenarios][input]") {
+  const std::string preset = std::string(LBDEM_SOURCE_DIR) + "/scenarios/box/presets/default.toml";
+  // Named by the file alone: the run starts (a tiny, short box).
+  const std::string out = tmpdir("config_names_scenario");
+  const auto ok =
+      cli("run --config " + preset + " --out " + out + kSmall +
+          " --set run.end_time=0.002 --set output.checkpoint_interval=0.002 --no-plots");
+  INFO(ok.err);
+  CHECK(ok.code == 0);
+  CHECK(fs::exists(out + "/timeseries.csv"));
+  fs::remove_all(out);
+  // A file for another scenario than the command names, and a file that names none: one line
+  // each, exit 2, nothing written.
+  const std::string other = tmpdir("other_scenario"), bare = tmpdir("bare.toml");
+  std::ofstream(bare) << "[run]\nend_time = 0.01\n";
+  const auto clash = cli("run fluidized_bed --config " + preset + " --out " + other);
+  const auto none = cli("run --config " + bare + " --out " + other);
+  for (const auto& r : {clash, none}) {
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("'scenario'") != std::string::npos);
+    CHECK(r.err.find("fix:") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  CHECK(clash.err.find("'fluidized_bed'") != std::string::npos);
+  CHECK_FALSE(fs::exists(other));
+  fs::remove(bare);
+}
+
 TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][checkpoint]") {
   const std::string full = tmpdir("full"), part = tmpdir("part");
   REQUIRE(cli("run box --out " + full + kSmall).code == 0);
