@@ -50,6 +50,22 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
         table.get("ramp_start", 0.0, Range::non_negative("give the time the inflow starts in s"));
     out.ramp_time =
         table.get("ramp_time", 0.0, Range::non_negative("give the ramp duration in s (0: a step)"));
+    // Where the ramp starts from (a bed kept just below minimum fluidization, or a CFD code's
+    // small start value): zero, or an inflow along the same direction.
+    out.ramp_from = table.get_vec3("ramp_from", Vec3::Zero());
+    const Vec3 along = out.ramp_from.dot(out.velocity) / out.velocity.squaredNorm() * out.velocity;
+    if (out.ramp_from != Vec3::Zero() &&
+        ((out.ramp_from - along).norm() > 1e-12 * out.ramp_from.norm() ||
+         !(out.ramp_from.dot(out.velocity) > 0)))
+      throw InputError(
+          table.path("ramp_from"), vec_text(out.ramp_from),
+          "the ramp must start from zero or from an inflow along velocity " +
+              vec_text(out.velocity),
+          "give a multiple of velocity, e.g. " + vec_text(0.01 * out.velocity) + " for 1 % of it");
+    if (out.ramp_from != Vec3::Zero() && out.ramp_start == 0 && out.ramp_time == 0)
+      throw InputError(table.path("ramp_from"), vec_text(out.ramp_from),
+                       "the ramp never runs: ramp_start and ramp_time are 0",
+                       "set ramp_time (and ramp_start) in s, or drop ramp_from");
   } else if (out.kind == "outlet") {
     out.pressure = table.get("pressure", 0.0);
   }

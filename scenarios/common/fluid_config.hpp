@@ -18,7 +18,8 @@
 //   half the memory and the kernel's traffic; lbm/pdf_field.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
-//   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s]} |
+//   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s], ramp_from = [..]
+//   [m/s]} |
 //   {kind = "outlet", pressure = p [Pa, gauge]}.
 // Memory: 19 populations per cell (152 B in double, 76 B in float) plus the ghost layer.
 #include <array>
@@ -37,13 +38,16 @@ struct FluidFace {
   std::string kind = "wall";             // wall | periodic | moving_wall | inlet | outlet
   Vec3 velocity = Vec3::Zero();          // moving_wall, inlet [m/s]
   double pressure = 0;                   // outlet, gauge pressure p - p_ref [Pa]
-  double ramp_start = 0, ramp_time = 0;  // inlet: starts at ramp_start, full after ramp_time [s]
-  /// The inflow velocity at time t [m/s] (velocity itself for other kinds).
+  double ramp_start = 0, ramp_time = 0;  // inlet: leaves ramp_from at ramp_start, full after
+                                         // ramp_time [s]
+  Vec3 ramp_from = Vec3::Zero();         // inlet: the inflow before ramp_start [m/s]
+  /// The inflow velocity at time t [m/s] (velocity itself for other kinds): ramp_from until
+  /// ramp_start, then linear to velocity over ramp_time (a step when ramp_time = 0).
   Vec3 velocity_at(double t) const {
     if (kind != "inlet") return velocity;
-    if (t < ramp_start) return Vec3::Zero();
+    if (t < ramp_start) return ramp_from;
     if (ramp_time <= 0 || t >= ramp_start + ramp_time) return velocity;
-    return velocity * ((t - ramp_start) / ramp_time);
+    return ramp_from + (velocity - ramp_from) * ((t - ramp_start) / ramp_time);
   }
   bool ramped() const { return kind == "inlet" && (ramp_start > 0 || ramp_time > 0); }
 };

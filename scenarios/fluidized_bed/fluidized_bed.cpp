@@ -153,8 +153,9 @@ void FluidizedBedScenario::bed_banner(Log& log) const {
   log.derived("U_mf (Wen-Yu)", umf, "m/s",
               "(Ergun at eps_mf = 0.4: " + to_text(re_er * mu / (rho_f * d_o)) + " m/s)");
   log.derived("inflow U / U_mf", u_in_ / umf, "",
-              "(U = " + to_text(u_in_) + " m/s, from t = " + to_text(f.faces[4].ramp_start) +
-                  " s over " + to_text(f.faces[4].ramp_time) + " s)");
+              "(U = " + to_text(u_in_) + " m/s, from " + to_text(f.faces[4].ramp_from.norm()) +
+                  " m/s at t = " + to_text(f.faces[4].ramp_start) + " s over " +
+                  to_text(f.faces[4].ramp_time) + " s)");
   const double h_static = vol / (0.6 * area);
   log.derived("static bed height at solid fraction 0.6", h_static, "m",
               "(" + to_text(h_static / d_parcel) + " parcels high)");
