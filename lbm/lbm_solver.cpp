@@ -26,6 +26,15 @@ Grid make_grid(const LbmSettings& s) {
       throw InputError("faces." + std::string(BoxFaces::kNames[std::size_t(f)]) + ".density",
                        to_text(rho), "an outlet density must be positive",
                        "give the outlet density in lattice units, about 1");
+    const FaceBoundary& face = s.faces[f];
+    const std::string name(BoxFaces::kNames[std::size_t(f)]);
+    if (!(face.slip >= 0 && face.slip <= 1))
+      throw std::invalid_argument("face " + name + ": slip fraction must lie in [0, 1], got " +
+                                  std::to_string(face.slip));
+    if (face.slip > 0 && (face.kind != FaceKind::wall || !face.wall_velocity.isZero()))
+      throw std::invalid_argument("face " + name +
+                                  ": a slip fraction applies to a wall at rest only (not to a "
+                                  "moving wall, an inlet, an outlet or a periodic face)");
   }
   return Grid(s.nx, s.ny, s.nz, s.faces.periodic_axes());
 }
@@ -49,9 +58,13 @@ LbmSolver::LbmSolver(const LbmSettings& s)
     const FaceBoundary& face = s.faces[f];
     std::string name(BoxFaces::kNames[std::size_t(f)]);
     int body = 0;
-    if (face.kind == FaceKind::wall)
+    if (face.kind == FaceKind::wall) {
       body = add_body(std::move(name), uniform_velocity(face.wall_velocity));
-    else if (face.kind == FaceKind::inlet)
+      Body& b = bodies_[std::size_t(body - 1)];
+      b.slip = face.slip;  // checked in make_grid: a wall at rest
+      b.slip_axis = f / 2;
+      b.slip_sign = f % 2 ? -1 : 1;
+    } else if (face.kind == FaceKind::inlet)
       body = add_inlet(std::move(name), uniform_velocity(face.wall_velocity));
     else if (face.kind == FaceKind::outlet)
       body = add_outlet(std::move(name), face.density);
@@ -96,6 +109,8 @@ void LbmSolver::set_outlet_density(int body, double density) {
   if (b.wall_function)
     throw std::invalid_argument("body '" + b.name +
                                 "' has the wall function and cannot be an outlet");
+  if (b.slip > 0)
+    throw std::invalid_argument("body '" + b.name + "' is a slip wall and cannot be an outlet");
   if (b.outlet_density <= 0) links_dirty_ = true;  // a new outlet needs its velocity samples
   b.outlet_density = density;
   b.outlet.density = density;  // an existing outlet: no rebuild, so a ramp per step stays cheap
@@ -132,6 +147,10 @@ void LbmSolver::set_wall_velocity(int body, WallVelocity u) {
   if (u && b.wall_function)
     throw std::invalid_argument("body '" + b.name +
                                 "' has the wall function: it must stay at rest");
+  if (u && b.slip > 0)
+    throw std::invalid_argument("body '" + b.name +
+                                "' is a slip wall: it must stay at rest (moving slip walls are "
+                                "not supported)");
   b.velocity = std::move(u);
   set_wall_velocity_terms(b);
 }
@@ -142,6 +161,9 @@ void LbmSolver::set_wall_function(int body, bool on) {
   if (on && (b.outlet_density > 0 || b.velocity))
     throw std::invalid_argument("the wall function applies to walls at rest; body '" + b.name +
                                 "' is an outlet, an inlet or moving");
+  if (on && b.slip > 0)
+    throw std::invalid_argument("body '" + b.name +
+                                "' is a slip wall; the wall function replaces no-slip walls only");
   b.wall_function = on;
   links_dirty_ = true;
 }
@@ -155,6 +177,9 @@ void LbmSolver::rebuild_links() {
   for (std::size_t k = 0; k < bodies_.size(); ++k) {
     Body& b = bodies_[k];
     b.links = std::move(lists[k]);
+    if (b.slip > 0)
+      b.slip_links =
+          split_slip_links(b.links, flags_, CellFlag(k + 1), b.slip_axis, b.slip_sign, b.slip);
     set_wall_velocity_terms(b);
     if (b.outlet_density > 0)
       b.outlet =
@@ -337,6 +362,9 @@ void LbmSolver::step() {
                : b.wall_function ? apply_wall_function(pdf, state_, b.links, b.wall_cells, law,
                                                        moments, settings_.wall_density, b.origin)
                                  : apply_bounce_back(pdf, state_, b.links, b.origin);
+    // Slip faces: the links with a specular partner (the rest bounced back above).
+    for (Body& b : bodies_)
+      if (b.slip > 0) b.load += apply_slip_links(pdf, state_, b.slip_links, b.origin);
   });
   add_mass_sources();
   ++steps_;

@@ -6,14 +6,17 @@
 //
 // A step: the velocity next to each outlet (open_boundary.hpp), the kernel (stream_collide.hpp)
 // for the operator and forcing in use, then each body's links: bounce-back for walls and velocity
-// inlets (bounce_back.hpp), anti-bounce-back for density outlets; they also give its
-// momentum-exchange force and the mass it passed to the fluid. Last, the mass sources.
+// inlets (bounce_back.hpp), anti-bounce-back for density outlets, and on a box face with a slip
+// fraction the blend of bounce-back and specular reflection (slip_wall.hpp) on the links that have
+// a specular partner; they also give its momentum-exchange force and the mass it passed to the
+// fluid. Last, the mass sources.
 #include "core/types.hpp"
 #include "lbm/aa_pattern.hpp"
 #include "lbm/boundary/bounce_back.hpp"
 #include "lbm/boundary/box_faces.hpp"
 #include "lbm/boundary/flags.hpp"
 #include "lbm/boundary/open_boundary.hpp"
+#include "lbm/boundary/slip_wall.hpp"
 #include "lbm/boundary/wall_function.hpp"
 #include "lbm/cell.hpp"
 #include "lbm/collision/collision_model.hpp"
@@ -69,10 +72,13 @@ class LbmSolver {
   const std::string& body_name(int body) const { return bodies_[std::size_t(body - 1)].name; }
   /// Body id of a box face, 0 if the face is periodic.
   int face_body(int face) const { return face_body_[std::size_t(face)]; }
+  /// Slip fraction of a body: FaceBoundary::slip of its box face, 0 for any other body.
+  double wall_slip(int body) const { return bodies_[std::size_t(body - 1)].slip; }
   /// Makes an interior cell solid (body >= 1) or fluid again (0). Links are rebuilt before the next
   /// step; a cell that turns fluid keeps whatever populations it holds.
   void set_cell(int x, int y, int z, int body);
-  /// Ignored by outlets, whose velocity is free.
+  /// Ignored by outlets, whose velocity is free. Throws std::invalid_argument for a moving
+  /// velocity on a slip face (FaceBoundary::slip > 0).
   void set_wall_velocity(int body, WallVelocity u);
   /// A velocity inlet: a body whose bounce-back links carry Ladd's term at the inflow velocity u
   /// (at each link's half-way point) and the wall density; its cells come from set_cell, as for
@@ -205,6 +211,9 @@ class LbmSolver {
     bool outlet_backflow = true;
     bool wall_function = false;
     WallFunctionCells wall_cells;  // built with the links when wall_function is on
+    double slip = 0;               // > 0: a slip face, whose inward normal is slip_sign e_axis
+    int slip_axis = 0, slip_sign = 1;
+    SlipLinks slip_links;  // split from `links` when they are built; the rest bounce back
   };
   void rebuild_links();
   void add_mass_sources();

@@ -1,8 +1,8 @@
 #pragma once
 // The six faces of the box: each periodic, or a body made of the ghost layer behind it: a half-way
-// bounce-back wall (optionally moving tangentially), a velocity inlet (bounce-back with Ladd's term
-// at the inflow velocity, bounce_back.hpp) or a density outlet (anti-bounce-back,
-// open_boundary.hpp).
+// bounce-back wall (optionally moving tangentially, or at rest with a slip fraction: partial or
+// free slip, slip_wall.hpp), a velocity inlet (bounce-back with Ladd's term at the inflow
+// velocity, bounce_back.hpp) or a density outlet (anti-bounce-back, open_boundary.hpp).
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "lbm/boundary/flags.hpp"
@@ -20,6 +20,10 @@ struct FaceBoundary {
   FaceKind kind = FaceKind::periodic;
   Vec3 wall_velocity = Vec3::Zero();  // wall: its velocity; inlet: the inflow velocity [lattice]
   double density = 1.0;               // outlet: rho_out, pressure rho_out c_s^2 [lattice units]
+  // wall at rest: slip fraction s in [0, 1] [-], the share of specular reflection in the wall's
+  // populations (slip_wall.hpp): 0 no slip (half-way bounce-back, unchanged), 1 free slip. The
+  // solver refuses s > 0 on a moving wall, an inlet, an outlet or a periodic face.
+  double slip = 0.0;
 };
 
 /// Faces in the order x_lo, x_hi, y_lo, y_hi, z_lo, z_hi (face = 2 axis + side).
