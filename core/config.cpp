@@ -189,6 +189,10 @@ Config Config::from_file(const std::string& path) {
   }
 }
 
+Config Config::detached() const {
+  return Config(std::make_shared<State>(*s_), prefix_);
+}
+
 void Config::set_override(std::string_view assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0)

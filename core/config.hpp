@@ -46,6 +46,10 @@ class Config {
   /// Applies "a.b.c=value" (value in TOML syntax; bare words are taken as strings).
   void set_override(std::string_view assignment);
 
+  /// A deep copy of the whole input behind this view (the same view into it): set_override() on
+  /// it leaves this one untouched, to try a changed value through the same readers.
+  Config detached() const;
+
   /// A view of the table at `key` (created empty if absent), with paths reported in full.
   Config section(std::string_view key) const;
   /// The tables of an array of tables ([[key]]); empty if absent.

@@ -11,8 +11,13 @@ namespace lbdem {
 class InputError : public std::runtime_error {
  public:
   InputError(std::string key, std::string value, std::string problem, std::string fix)
-      : std::runtime_error(format(key, value, problem, fix)), key_(std::move(key)) {}
+      : std::runtime_error(format(key, value, problem, fix)),
+        key_(std::move(key)),
+        value_(std::move(value)),
+        problem_(std::move(problem)) {}
   const std::string& key() const { return key_; }
+  /// The same error with another fix (a caller that knows which changes pass its checks).
+  InputError with_fix(std::string fix) const { return {key_, value_, problem_, std::move(fix)}; }
 
   static std::string format(const std::string& key, const std::string& value,
                             const std::string& problem, const std::string& fix) {
@@ -24,7 +29,7 @@ class InputError : public std::runtime_error {
   }
 
  private:
-  std::string key_;
+  std::string key_, value_, problem_;
 };
 
 /// Renders a number the way a user would type it in a TOML file.

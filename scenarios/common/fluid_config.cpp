@@ -1,6 +1,8 @@
 #include "scenarios/common/fluid_config.hpp"
 
 #include <cmath>
+#include <exception>
+#include <utility>
 
 #include "core/error.hpp"
 #include "lbm/d3q19.hpp"
@@ -87,6 +89,66 @@ int cells_along(const Config& fluid, int axis, double length, double dx) {
   return static_cast<int>(n);
 }
 
+// Set while read_fluid reads a changed input to see whether a fix passes, so that the try does
+// not look for fixes of its own.
+thread_local bool g_trying_fix = false;
+
+using Change = std::pair<std::string, std::string>;  // key under [fluid], value as TOML
+
+// Of the changes, in order, those with which the whole of read_fluid passes (every check a run
+// would meet at start-up), as "fluid.key = value"; at most `keep`.
+std::vector<std::string> passing(const Config& fluid, const std::vector<Change>& changes,
+                                 const Vec3& lo, const Vec3& hi,
+                                 const std::array<bool, 3>& periodic, const Vec3& gravity,
+                                 std::size_t keep = 3) {
+  std::vector<std::string> out;
+  const bool outer = g_trying_fix;
+  g_trying_fix = true;
+  for (const auto& [key, value] : changes) {
+    if (out.size() == keep) break;
+    Config trial = fluid.detached();
+    trial.set_override(fluid.path(key) + "=" + value);
+    try {
+      read_fluid(trial, lo, hi, periodic, gravity);
+      out.push_back(fluid.path(key) + " = " + value);
+    } catch (const std::exception&) {
+      // this change alone does not pass: not offered
+    }
+  }
+  g_trying_fix = outer;
+  return out;
+}
+
+std::string join_or(const std::vector<std::string>& items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", or " : "") + items[i];
+  return s;
+}
+
+// The changes that can cure a gas that will not start (tau too close to 1/2, Mach, Dp) or that
+// diverged: another collision operator, a finer grid (dx / 2 and dx / 3 keep every box edge a
+// whole number of cells), and the time step both ways (a divergence wants it shorter, a tau near
+// 1/2 longer).
+std::vector<Change> gas_changes(const Config& fluid, const FluidConfig& c, bool shorter_first) {
+  std::vector<Change> ch;
+  if (c.collision != "les") ch.push_back({"collision", "\"les\""});
+  if (c.collision == "les" && c.smagorinsky < 0.17) ch.push_back({"smagorinsky", "0.17"});
+  if (c.collision == "bgk") ch.push_back({"collision", "\"trt\""});
+  std::vector<Change> step;
+  if (fluid.has("dt")) {
+    step = {{"dt", to_text(0.5 * c.dt, 12)}, {"dt", to_text(2 * c.dt, 12)}};
+  } else {
+    const double ul = fluid.get("lattice_velocity", 0.1);
+    step = {{"lattice_velocity", to_text(0.5 * ul, 12)},
+            {"lattice_velocity", to_text(std::min(0.3, 2 * ul), 12)}};
+  }
+  if (!shorter_first) std::swap(step[0], step[1]);
+  ch.insert(ch.end(), step.begin(), step.end());
+  ch.push_back({"dx", to_text(c.dx / 2, 12)});
+  ch.push_back({"dx", to_text(c.dx / 3, 12)});
+  return ch;
+}
+
 }  // namespace
 
 FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
@@ -159,7 +221,8 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   } else if (c.collision == "bgk") {
     // BGK's linearly stable range of lattice speeds shrinks as tau -> 1/2 (Sterling & Chen 1996,
     // J. Comput. Phys. 123, 196); TRT keeps its odd rate away from 2 through the magic parameter
-    // and runs far closer (docs/physics.md, Coupling kernel). BGK gets 50 times TRT's margin: tau
+    // and runs far closer (docs/physics.md, Lattice units and limits). BGK gets 50 times TRT's
+    // margin: tau
     // >= 0.505.
     tau_margin = 5e-3;
   } else {
@@ -211,7 +274,19 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   in.tau_margin = tau_margin;
   in.key_dt = key_dt;
   in.key_dx = fluid.path("dx");
-  c.report = lbm::check_stability(in);
+  try {
+    c.report = lbm::check_stability(in);
+  } catch (const InputError& e) {
+    if (g_trying_fix) throw;
+    // Offer only what passes every check a run meets: a longer step or a finer grid may each run
+    // into another limit (the pressure rule caps dt; a box edge must stay whole cells).
+    const auto fixes = passing(fluid, gas_changes(fluid, c, false), lo, hi, box_periodic, gravity);
+    throw e.with_fix(fixes.empty()
+                         ? "no single change of fluid.collision, fluid.dx or the gas time step "
+                           "passes every check; lower fluid.max_speed or "
+                           "fluid.pressure_difference if the flow allows"
+                         : "set " + join_or(fixes));
+  }
 
   // Reynolds number on the narrowest wall-to-wall distance (the channel width), or the longest
   // edge of a fully periodic box.
@@ -223,6 +298,25 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   }
   c.reynolds_length = l_wall > 0 ? l_wall : l_max;
   c.reynolds = c.max_speed * c.reynolds_length / c.nu();
+  // What a divergence message may offer: the changes that pass these same checks.
+  if (!g_trying_fix) {
+    c.divergence_fixes = passing(fluid, gas_changes(fluid, c, true), lo, hi, box_periodic, gravity);
+    c.try_change = [input = fluid.detached(), lo, hi, box_periodic, gravity](
+                       const std::string& key, const std::string& value) -> std::string {
+      Config trial = input.detached();
+      trial.set_override(trial.path(key) + "=" + value);
+      const bool outer = g_trying_fix;
+      g_trying_fix = true;
+      std::string err;
+      try {
+        read_fluid(trial, lo, hi, box_periodic, gravity);
+      } catch (const std::exception& e) {
+        err = e.what();
+      }
+      g_trying_fix = outer;
+      return err;
+    };
+  }
   return c;
 }
 

@@ -24,6 +24,7 @@
 // Memory: 19 populations per cell (152 B in double, 76 B in float) plus the ghost layer.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,12 @@ struct FluidConfig {
   std::string dt_from;                   // how dt was chosen (banner)
   double reynolds = 0, reynolds_length = 0;  // max_speed L / nu and its L [m]
   lbm::StabilityReport report{};
+  /// Changes ("fluid.key = value") that pass every start-up check and may cure a divergence: a
+  /// shorter time step, another operator, a finer grid; empty if none does.
+  std::vector<std::string> divergence_fixes;
+  /// Reads the same input with one key under [fluid] changed (value as TOML): "" if every
+  /// start-up check passes, else the error. For messages of a running gas that offer a change.
+  std::function<std::string(const std::string& key, const std::string& value)> try_change;
 
   double nu() const { return viscosity / density; }  // kinematic [m^2/s]
   lbm::LatticeUnits units() const { return {dx, dt, density}; }
