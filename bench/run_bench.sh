@@ -20,7 +20,7 @@ if [[ ${1:-} == size ]]; then
   shift
   exec /usr/bin/python3 "$ROOT/bench/size.py" "$BUILD_DIR" "$@"
 fi
-PEERS=0 SIZES="20000 100000" STEPS="" REPS=${REPS:-1} LBM_SIZES="64 128" DEM=1 LBM=1
+PEERS=0 PEERS_MISSING=0 SIZES="20000 100000" STEPS="" REPS=${REPS:-1} LBM_SIZES="64 128" DEM=1 LBM=1
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --peers) PEERS=1 ;;
@@ -59,14 +59,32 @@ if [[ $PEERS == 1 ]]; then
   [[ $LBM == 1 ]] && pkgs+=(libplb-dev libeigen3-dev libtinyxml-dev)
   for p in "${pkgs[@]}"; do dpkg-query -W -f='${db:Status-Abbrev}' "$p" 2>/dev/null | grep -q '^ii' || need+=("$p"); done
   if ((${#need[@]})); then
-    sudo=(); [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+    echo "lbdem bench: installing the peers' Debian packages: ${need[*]}" >&2
+    sudo=()
+    if [[ $(id -u) -ne 0 ]]; then
+      command -v sudo >/dev/null || { echo "lbdem bench: need root or sudo to install: ${need[*]}" >&2; exit 1; }
+      sudo=(sudo)
+    fi
     "${sudo[@]}" apt-get update -qq && DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
   fi
   sections=(stream)
   [[ $LBM == 1 ]] && sections+=(palabos)
   [[ $DEM == 1 ]] && sections+=(liggghts lammps)
+  # run_all.sh's progress and failures ("liggghts not found", "palabos build failed") go to its
+  # stderr: shown as they come and kept in $PEERS_LOG, so that a missing row has its reason.
+  PEERS_LOG="$WORK/peers.log"
+  echo "# peers: progress on stderr and in $PEERS_LOG (settling a bed of 100,000 takes minutes per code)" | tee -a "$TABLE"
   PEERS_WORK="$WORK/peers" REPS="$REPS" RANKS="1 2" DEM_SIZES="$SIZES" PLB_SIZES="$LBM_SIZES" \
-    bash "$PEERS_DIR/run_all.sh" "${sections[@]}" 2>/dev/null | tee -a "$TABLE"
+    bash "$PEERS_DIR/run_all.sh" "${sections[@]}" 2> >(tee "$PEERS_LOG" >&2) | tee -a "$TABLE" || true
+  wait  # for the tee on stderr
+  for s in "${sections[@]}"; do
+    if ! grep -q "^$s " "$TABLE"; then
+      PEERS_MISSING=1
+      why=$(grep -iE "not found|failed" "$PEERS_LOG" | grep -i "$s" | tail -n 2 | tr '\n' ' ')
+      [[ -n $why ]] || why="the last lines of $PEERS_LOG: $(tail -n 2 "$PEERS_LOG" | tr '\n' ' ')"
+      echo "lbdem bench: no $s row; $why" | tee -a "$TABLE" >&2
+    fi
+  done
   # Ratios: lbdem per thread against the best peer per rank, and lbdem's 1 -> 2 thread speed-up.
   awk '
     { for (i = 3; i <= NF; i++) if ($i == "particle-steps/s") { v = $(i-1) + 0; t = $(i-2); break }
@@ -100,3 +118,5 @@ if [[ $PEERS == 1 ]]; then
     }' "$TABLE" | tee -a "$TABLE"
 fi
 echo "# table: $TABLE"
+# A peer that gave no row fails the command (after the rows and ratios the others gave).
+[[ $PEERS_MISSING == 0 ]] || exit 1

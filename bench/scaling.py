@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""OpenMP thread scaling of lbdem on fixed cases (issue 12 §1): speed-up, parallel efficiency,
+"""OpenMP thread scaling of lbdem on fixed cases: speed-up, parallel efficiency,
 bitwise equality across thread counts, and where the time goes.
 
 usage: ./lbdem bench scaling [--threads 1,2,...] [--case NAME]... [--out DIR]

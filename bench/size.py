@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""How cost and memory grow with problem size (issue 12 §1): throughput and resident bytes per
+"""How cost and memory grow with problem size: throughput and resident bytes per
 particle and per cell, DEM from 10^4 to 10^6 particles, LBM from 32^3 to 256^3 cells.
 
 usage: ./lbdem bench size [--dem-n 10000,...] [--lbm-n 32,...] [--threads T] [--settle S]

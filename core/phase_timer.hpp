@@ -1,5 +1,5 @@
 #pragma once
-// Where a run's wall time goes (issue 12 §1): one process-wide table of seconds per phase of the
+// Where a run's wall time goes: one process-wide table of seconds per phase of the
 // solvers' steps, which the solvers book with laps (after LAMMPS's Timer, which its styles share),
 // and the run command prints at the end of log.txt. A lap reads the run clock (run_clock.hpp) once
 // per phase boundary (a few tens of ns, against microseconds and more per phase); switched off

@@ -1,13 +1,13 @@
 #pragma once
 // What a run cost, kept in its checkpoint so that the sums survive a run killed without warning
-// (issue 12 §2: wall time per simulated second of each coarse-graining case). Paper-scale cases
-// take longer than one session and are resumed from checkpoints; a session's end kills the
-// process, which then neither finishes its log nor returns to the study, so sums kept by the
-// caller lost every such invocation. Here the stepping loop's wall seconds and the phase timers'
-// seconds are summed over the invocations and written with each checkpoint (/timing): the steps
-// a killed invocation made after its last checkpoint are simulated again on resume, and so are
-// counted once, as in a run that never stopped. Not counted: set-up, banner and plots (outside the
-// loop), and the output time of the step that writes a checkpoint (booked after it is saved; at
+// (the studies report wall time per simulated second of each coarse-graining case). Paper-scale
+// cases run for hours and are stopped and resumed from checkpoints; a process killed outright
+// (SIGKILL, a lost machine) then neither finishes its log nor returns to the study, so sums kept by
+// the caller would lose every such invocation. Here the stepping loop's wall seconds and the phase
+// timers' seconds are summed over the invocations and written with each checkpoint (/timing): the
+// steps a killed invocation made after its last checkpoint are simulated again on resume, and so
+// are counted once, as in a run that never stopped. Not counted: set-up, banner and plots (outside
+// the loop), and the output time of the step that writes a checkpoint (booked after it is saved; at
 // a step's end that is the health check, row, snapshot and the checkpoint itself: seconds against
 // the hours of a paper-scale run). Phases stored under a name this lbdem does not know are dropped
 // (their seconds stay in the wall time).

@@ -53,7 +53,7 @@ double timed_from(const std::string& dir);
 std::vector<std::pair<std::string, double>> read_phase_table(const std::string& log,
                                                              std::streamoff from = 0);
 
-/// Wall seconds per simulated second of a case, whole and split by part (issue 12 §2: which part
+/// Wall seconds per simulated second of a case, whole and split by part (which part
 /// bounds the coarse-graining speed-up). The parts are the phase timers' groups, summed over the
 /// study's invocations (study_phases.txt); a case run before those sums were kept takes its last
 /// invocation's shares of the summed wall time (`from_shares`). total 0: no timing yet.

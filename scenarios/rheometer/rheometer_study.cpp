@@ -59,10 +59,11 @@ const std::vector<Case>& cases() {
        2,
        {"coarse_grain.scale_dt=false", "dem.dt=2.2e-6"},
        "dt t_c/50"},
-      // Explanations of the CG torque change (issue 9 §4). Gap jamming: a 2 mm blade-wall gap is
-      // 0.93 parcel diameters at l = 2, as the 1 mm gap is at l = 1; its CG 1 reference has the
-      // same geometry. Parcels across the blade: a 20 mm blade has 9.3 parcels across its height at
-      // l = 2, as the 10 mm blade has at l = 1 (blade top at 30 mm, still under the 39 mm bed).
+      // Explanations of the CG torque change (docs/studies.md, Rheometer). Gap jamming: a 2 mm
+      // blade-wall gap is 0.93 parcel diameters at l = 2, as the 1 mm gap is at l = 1; its CG 1
+      // reference has the same geometry. Parcels across the blade: a 20 mm blade has 9.3 parcels
+      // across its height at l = 2, as the 10 mm blade has at l = 1 (blade top at 30 mm, still
+      // under the 39 mm bed).
       {"cg1_gap2", "cg1", "seed (l = 1)", 1, {"rheometer.blade_span=0.046"}, "gap 2 mm"},
       {"cg2_gap2", "cg2", "stiffness_only", 2, {"rheometer.blade_span=0.046"}, "gap 2 mm"},
       {"cg1_tall", "cg1", "seed (l = 1)", 1, {"rheometer.blade_height=0.02"}, "blade 20 mm"},

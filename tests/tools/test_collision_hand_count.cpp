@@ -1,4 +1,4 @@
-// lbdem-collision-stats on a constructed run against hand counts (issue 11 §4): two beads meet
+// lbdem-collision-stats on a constructed run against hand counts: two beads meet
 // head-on and a third hits the floor, once each, without gravity; the tool's collision counts,
 // frequencies and dissipated energy against what one computes on paper.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// lbdem-jet-mill-maps: the jet mill's particle and gas fields of one run folder (issue 11 §2):
+// lbdem-jet-mill-maps: the jet mill's particle and gas fields of one run folder:
 // positions seen from above at the end of the window (the study's Fig. 2), mean particle speed on
 // x-y bins (Fig. 3) and against the distance from the outer wall (Fig. 6) over the window's
 // particle snapshots, the gas speed on the mid-plane and its tangential and radial velocity

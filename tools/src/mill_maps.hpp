@@ -1,9 +1,9 @@
 #pragma once
-// The spiral jet mill's maps and profiles (issue 11 §2; Scott, Borissova, Di Renzo & Ghadiri,
-// Figs. 3, 4 and 6): particle speed binned on the x-y plane and against the distance from the
-// chamber's outer wall, both averaged over every particle sample (each particle in each snapshot
-// of the window counts once); the gas's tangential and radial velocity against radius; the mean
-// speed of the samples in the jets' regions. Plain formulas on arrays, tested in tests/tools/.
+// The spiral jet mill's maps and profiles (as in Figs. 3, 4 and 6 of Scott, Borissova, Di Renzo
+// & Ghadiri; docs/studies.md): particle speed binned on the x-y plane and against the distance
+// from the chamber's outer wall, both averaged over every particle sample (each particle in each
+// snapshot of the window counts once); the gas's tangential and radial velocity against radius; the
+// mean speed of the samples in the jets' regions. Plain formulas on arrays, tested in tests/tools/.
 #include <array>
 #include <cstddef>
 #include <span>
