@@ -13,6 +13,7 @@ struct Config::State {
   toml::table input;     // what the user gave (file + --set)
   toml::table resolved;  // input plus every default that was read
   std::set<std::string> known;
+  std::map<std::string, KeyInfo> read;  // by path without indices (read_keys())
   std::string source;
 };
 
@@ -133,6 +134,25 @@ std::string strip_indices(std::string_view p) {
     if (c == ']') in = false;
   }
   return s;
+}
+
+// "> 0", ">= 1 and <= 512": the bounds of a Range as check_range states them.
+std::string range_text(const Range& r) {
+  std::string want;
+  if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
+  if (std::isfinite(r.hi))
+    want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
+  return want;
+}
+
+std::string quoted(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+std::string list_default(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + shortest_text(v[i]);
+  return s + "]";
 }
 
 }  // namespace
@@ -312,14 +332,23 @@ std::vector<Config> Config::table_array(std::string_view key) const {
   return out;
 }
 
+const std::map<std::string, KeyInfo>& Config::read_keys() const {
+  return s_->read;
+}
+
+KeyInfo& Config::note(std::string_view key, std::string type, std::string default_text) const {
+  KeyInfo& k = s_->read[strip_indices(path(key))];
+  k = KeyInfo{};
+  k.type = std::move(type);
+  k.default_text = std::move(default_text);
+  return k;
+}
+
 void Config::check_range(std::string_view key, double v, const Range& r) const {
   const bool lo_bad = r.lo_open ? !(v > r.lo) : !(v >= r.lo);
   const bool hi_bad = r.hi_open ? !(v < r.hi) : !(v <= r.hi);
   if (!std::isfinite(v) || lo_bad || hi_bad) {
-    std::string want;
-    if (std::isfinite(r.lo)) want += std::string(r.lo_open ? "> " : ">= ") + to_text(r.lo);
-    if (std::isfinite(r.hi))
-      want += std::string(want.empty() ? "" : " and ") + (r.hi_open ? "< " : "<= ") + to_text(r.hi);
+    const std::string want = range_text(r);
     throw InputError(path(key), shortest_text(v), "must be " + (want.empty() ? "finite" : want),
                      !r.fix.empty() ? std::string(r.fix)
                      : want.empty() ? "give a finite number"
@@ -340,13 +369,17 @@ double Config::get(std::string_view key, double def, Range r) const {
   }
   check_range(key, v, r);
   record(key, toml::value<double>(v));
+  note(key, "number", shortest_text(def)).range_text = range_text(r);
   return v;
 }
 
 double Config::require(std::string_view key, Range r) const {
   if (!find(key))
     throw InputError(path(key), "", "missing", "add " + path(key) + " = <value> to the config");
-  return get(key, 0.0, r);
+  const double v = get(key, 0.0, r);
+  note(key, "number", "").required = true;
+  s_->read[strip_indices(path(key))].range_text = range_text(r);
+  return v;
 }
 
 std::int64_t Config::get_int(std::string_view key, std::int64_t def, Range r) const {
@@ -363,6 +396,7 @@ std::int64_t Config::get_int(std::string_view key, std::int64_t def, Range r) co
   }
   check_range(key, static_cast<double>(v), r);
   record(key, toml::value<std::int64_t>(v));
+  note(key, "integer", std::to_string(def)).range_text = range_text(r);
   return v;
 }
 
@@ -377,6 +411,7 @@ bool Config::get_bool(std::string_view key, bool def) const {
     }
   }
   record(key, toml::value<bool>(v));
+  note(key, "bool", def ? "true" : "false");
   return v;
 }
 
@@ -391,12 +426,14 @@ std::string Config::get_string(std::string_view key, std::string_view def) const
     }
   }
   record(key, toml::value<std::string>(v));
+  note(key, "string", quoted(def));
   return v;
 }
 
 std::string Config::get_choice(std::string_view key, std::string_view def,
                                const std::vector<std::string>& choices) const {
   std::string v = get_string(key, def);
+  note(key, "choice", quoted(def)).choices = choices;
   if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
@@ -426,6 +463,7 @@ std::vector<double> Config::get_list(std::string_view key, const std::vector<dou
   toml::array a;
   for (double x : v) a.push_back(x);
   record(key, std::move(a));
+  note(key, "list", list_default(def));
   return v;
 }
 
@@ -435,13 +473,16 @@ Vec3 Config::get_vec3(std::string_view key, const Vec3& def) const {
     throw InputError(path(key), list_text(v), "expected three numbers [x, y, z]",
                      "write [x, y, z] in SI units");
   }
+  note(key, "vector", list_default({def.x(), def.y(), def.z()}));
   return {v[0], v[1], v[2]};
 }
 
 Vec3 Config::require_vec3(std::string_view key) const {
   if (!find(key))
     throw InputError(path(key), "", "missing", "add " + path(key) + " = [x, y, z] to the config");
-  return get_vec3(key, Vec3::Zero());
+  const Vec3 v = get_vec3(key, Vec3::Zero());
+  note(key, "vector", "").required = true;
+  return v;
 }
 
 void Config::check_unknown_keys() const {

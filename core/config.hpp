@@ -2,13 +2,16 @@
 // Typed, range-checked access to a TOML run description (toml++).
 //
 // Every key a scenario reads is recorded together with the value it resolved to (the default where
-// the file is silent), so that (1) the run folder gets the fully resolved config.toml and (2) any
-// key in the input that nobody read is reported as unknown, with a fix (unknown_key_fix).
+// the file is silent), so that (1) the run folder gets the fully resolved config.toml, (2) any
+// key in the input that nobody read is reported as unknown, with a fix (unknown_key_fix), and
+// (3) how each key was read (type, default, range, choices: read_keys()) can be listed in the
+// generated reference docs/config.md (lbdem-cli config).
 #include "core/types.hpp"
 
 #include <toml++/toml.h>
 
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -36,6 +39,15 @@ struct Range {
     return {lo, hi, false, false, fix};
   }
   static constexpr double kInf = std::numeric_limits<double>::infinity();
+};
+
+/// How a key was read, for the generated reference: what the getter was given, nothing more.
+struct KeyInfo {
+  std::string type;          // number, integer, bool, string, choice, vector [x, y, z], list
+  std::string default_text;  // the default as TOML text; empty when required
+  bool required = false;
+  std::string range_text;  // "> 0", ">= 1 and <= 512"; empty when any finite value is allowed
+  std::vector<std::string> choices;
 };
 
 class Config {
@@ -75,6 +87,9 @@ class Config {
   std::string resolved_toml() const;
   /// Full dotted path of `key` under this view.
   std::string path(std::string_view key) const;
+  /// Every key read so far, by path with the indices of arrays of tables removed
+  /// (fill[2].radius.kind -> fill.radius.kind); a key read twice keeps its last reading.
+  const std::map<std::string, KeyInfo>& read_keys() const;
 
  private:
   struct State;
@@ -83,6 +98,7 @@ class Config {
   const toml::node* find(std::string_view key) const;
   void record(std::string_view key, toml::node&& value_if_absent) const;
   void check_range(std::string_view key, double v, const Range& r) const;
+  KeyInfo& note(std::string_view key, std::string type, std::string default_text) const;
 
   std::shared_ptr<State> s_;
   std::string prefix_;

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   run->add_option("--resume", opt.resume, "continue the run in RUN_DIR from its checkpoint.h5");
   run->add_flag("--list", opt.list, "list the scenarios");
   run->add_flag("--no-plots", opt.no_plots, "skip the PNG plots");
+  auto* config = app.add_subcommand(
+      "config", "print the reference of every config key (markdown; docs/config.md is its output)");
   auto* study = app.add_subcommand("study", "run a multi-run study");
   StudyOptions so;
   study->add_option("name", so.name, "study name (see --list)");
@@ -59,6 +61,7 @@ int main(int argc, char** argv) {
     if ((*study ? study : run)->count("--threads") && threads < 1)
       throw lbdem::InputError("--threads", std::to_string(threads), "must be at least 1",
                               "give a thread count >= 1, or leave --threads out to use all cores");
+    if (*config) return print_config_reference();
     if (*study) return run_study(so);
     return run_scenario(opt);
   } catch (const lbdem::InputError& e) {

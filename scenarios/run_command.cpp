@@ -94,7 +94,35 @@ void log_phase_times(Log& log, RunClock::duration elapsed) {
       table);
 }
 
+// The keys the run command reads itself, beside the scenario's: the file's scenario (a file written
+// for another one is refused rather than read with the wrong scenario's defaults) and whether the
+// phase timers run.
+bool read_command_keys(const Config& cfg, const std::string& name) {
+  if (const std::string in_file = cfg.get_string("scenario", name); in_file != name)
+    throw InputError("scenario", in_file,
+                     "the config file is for this scenario, the command names '" + name + "'",
+                     "drop the scenario name from the command, or use that scenario's config");
+  return cfg.section("run").get_bool("phase_timers", true);
+}
+
 }  // namespace
+
+std::vector<std::string> scenario_names() {
+  std::vector<std::string> names;
+  for (const auto& s : scenarios()) names.push_back(s.name);
+  return names;
+}
+
+void read_as_scenario(const std::string& name, const Config& cfg) {
+  for (const auto& s : scenarios())
+    if (s.name == name) {
+      read_command_keys(cfg, name);
+      s.make(cfg);
+      cfg.check_unknown_keys();
+      return;
+    }
+  throw InputError("scenario", name, "unknown scenario", "see ./lbdem run --list");
+}
 
 int run_study(const StudyOptions& opt) {
   if (opt.list || opt.name.empty()) {
@@ -177,14 +205,9 @@ int run_scenario(const RunOptions& opt) {
                        "start a new run (--config " + file + ") to change anything else");
     cfg.set_override(s);
   }
-  // Recorded, so the resolved config names its scenario; a file written for another one is
-  // refused rather than read with the wrong scenario's defaults.
-  if (const std::string in_file = cfg.get_string("scenario", name); in_file != name)
-    throw InputError("scenario", in_file,
-                     "the config file is for this scenario, the command names '" + name + "'",
-                     "drop the scenario name from the command, or use that scenario's config");
-  // Wall time per phase, printed at the end of log.txt (core/phase_timer.hpp).
-  PhaseTimer::global().enable(cfg.section("run").get_bool("phase_timers", true));
+  // Recorded, so the resolved config names its scenario. Wall time per phase, printed at the end
+  // of log.txt (core/phase_timer.hpp).
+  PhaseTimer::global().enable(read_command_keys(cfg, name));
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 
   // Validates everything; throws InputError before any output.

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config.hpp"
 #include "scenarios/study_options.hpp"
 
 namespace lbdem::scenarios {
@@ -19,5 +20,13 @@ struct RunOptions {
 int run_scenario(const RunOptions& opt);
 /// Runs the named study's cases one after another (see each study's header).
 int run_study(const StudyOptions& opt);
+
+/// The scenarios' names, as `run --list` gives them.
+std::vector<std::string> scenario_names();
+/// Reads `cfg` as the run command would for scenario `name` (builds the scenario and discards
+/// it, then checks for unknown keys); InputError as for a run.
+void read_as_scenario(const std::string& name, const Config& cfg);
+/// The `config` verb: prints the generated key reference (scenarios/config_reference.hpp).
+int print_config_reference();
 
 }  // namespace lbdem::scenarios
