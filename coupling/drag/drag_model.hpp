@@ -1,6 +1,6 @@
 #pragma once
 // The run-time choice of drag law: one checked-in table, names taken from the laws themselves.
-// A particle loop std::visit's the model once and runs compiled per law (STYLE 2).
+// A particle loop std::visit's the model once and runs compiled per law (docs/architecture.md).
 #include "coupling/drag/beetstra.hpp"
 #include "coupling/drag/di_felice.hpp"
 #include "coupling/drag/drag_law.hpp"

@@ -438,7 +438,7 @@ TEST_CASE("coarse-grained drag: a dilute cloud relaxes and settles alike as orig
           "[coupling][physics]") {
   // The jet mill's powder (rho 1500 kg/m^3, original radius uniform in 75-100 um, Morsi-Alexander
   // drag) launched at 20 m/s along x into gas at rest, gravity along -z: a uniform stream seen
-  // from the gas, with gravity across it (issue 11 §4). One-way, so the gas stays at rest and the
+  // from the gas, with gravity across it. One-way, so the gas stays at rest and the
   // only difference between the clouds is the parcels' drag: l^3 times one original's, with the
   // original's diameter and Reynolds number (coarse_grain_drag.hpp). CG-1: 128 originals; CG-8
   // (l = 2): 16 parcels of 8, radii drawn from the same distribution. Each particle has a lane of

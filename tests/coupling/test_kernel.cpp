@@ -465,8 +465,9 @@ TEST_CASE("Kernel: clipping reports the count and the first clipped cell", "[cou
 
 TEST_CASE("Kernel: deposition and interpolation are bitwise the same at 1 and 2 threads",
           "[coupling]") {
-  // Equivalence test (not validation): STYLE 6. Also the fused four-component calls the
-  // exchange uses (a scalar and a vector in one filter) against the separate calls.
+  // Equivalence test (not validation): the thread count must not change a bit. Also the fused
+  // four-component calls the exchange uses (a scalar and a vector in one filter) against the
+  // separate calls.
   const Grid g(20, 18, 16, {true, false, false});
   const auto solid = block_mask(g, {4, 5, 0}, {9, 9, 6});
   std::mt19937_64 rng(3);

@@ -279,7 +279,7 @@ bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b) {
 
 }  // namespace
 
-TEST_CASE("Slip fraction 0 is bounce-back; a vanishing one gives its populations bitwise",
+TEST_CASE("Slip fraction 0 is bounce-back, and a vanishing one gives its populations bitwise",
           "[lbm]") {
   // s = 0 takes the bounce-back path itself (no slip links are built). A slip of 1e-300 takes the
   // slip path, where a + s (b - a) rounds to a: the populations must be bounce-back's bitwise
