@@ -213,6 +213,13 @@ Config Config::detached() const {
   return Config(std::make_shared<State>(*s_), prefix_);
 }
 
+void Config::erase(std::string_view full_key) {
+  const auto parts = split_path(full_key);
+  if (parts.empty()) return;
+  for (toml::table* root : {&s_->input, &s_->resolved})
+    if (toml::table* parent = parent_table(*root, parts)) parent->erase(parts.back());
+}
+
 void Config::set_override(std::string_view assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0)

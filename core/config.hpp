@@ -61,6 +61,9 @@ class Config {
   /// A deep copy of the whole input behind this view (the same view into it): set_override() on
   /// it leaves this one untouched, to try a changed value through the same readers.
   Config detached() const;
+  /// Removes a key (full dotted path, no array indices) from the input, if there: with
+  /// detached(), to try an input without a setting.
+  void erase(std::string_view full_key);
 
   /// A view of the table at `key` (created empty if absent), with paths reported in full.
   Config section(std::string_view key) const;

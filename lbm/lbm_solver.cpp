@@ -218,6 +218,8 @@ void LbmSolver::initialize(
         }
   });
   state_ = AaState::natural;
+  initial_mass_ = total_mass();
+  exchanged_mass_ = 0;
 }
 
 void LbmSolver::enable_force_field() {
@@ -355,6 +357,7 @@ void LbmSolver::step() {
   const MomentFields moments{
       cell_moments_[0].data(),
       {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
+  for (Body& b : bodies_) b.previous_force = b.load.force;
   with_pdf([&](auto& pdf) {
     for (Body& b : bodies_)
       b.load = b.outlet_density > 0
@@ -367,6 +370,8 @@ void LbmSolver::step() {
       if (b.slip > 0) b.load += apply_slip_links(pdf, state_, b.slip_links, b.origin);
   });
   add_mass_sources();
+  for (const Body& b : bodies_) exchanged_mass_ += b.load.mass;  // bodies in a fixed order
+  exchanged_mass_ += mass_source_rate();
   ++steps_;
   lap.to(Phase::lbm_boundaries);
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <tuple>
 #include <utility>
 
 #include "core/error.hpp"
@@ -12,7 +14,8 @@ namespace lbdem::scenarios {
 namespace {
 
 const char* kAxes[3] = {"x", "y", "z"};
-const std::vector<std::string> kFaceKinds = {"wall", "periodic", "moving_wall", "inlet", "outlet"};
+const std::vector<std::string> kFaceKinds = {"wall",        "free_slip", "periodic",
+                                             "moving_wall", "inlet",     "outlet"};
 
 // One face: a plain string, or an inline table with a kind.
 FluidFace read_face(const Config& faces, int f, bool periodic_default) {
@@ -23,6 +26,11 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
   const Config table = faces.section(name);
   if (!table.has("kind")) {
     out.kind = faces.get_choice(name, periodic_default ? "periodic" : "wall", kFaceKinds);
+    if (out.kind == "free_slip") {  // a wall at rest that takes no tangential momentum
+      out.kind = "wall";
+      out.slip_length = std::numeric_limits<double>::infinity();
+      return out;
+    }
     if (out.kind != "wall" && out.kind != "periodic")
       throw InputError(faces.path(name), "\"" + out.kind + "\"", "this kind needs its parameters",
                        out.kind == "outlet"
@@ -31,7 +39,15 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
     return out;
   }
   out.kind = table.get_choice("kind", "wall", kFaceKinds);
-  if (out.kind == "moving_wall") {
+  if (out.kind == "free_slip") {
+    out.kind = "wall";
+    out.slip_length = std::numeric_limits<double>::infinity();
+  } else if (out.kind == "wall") {
+    // Navier's slip length b (u_wall = b du/dn): 0 no slip, inf free slip.
+    out.slip_length = table.get("slip_length", 0.0,
+                                Range::non_negative("give the slip length in m (0: no slip, inf: "
+                                                    "free slip)"));
+  } else if (out.kind == "moving_wall") {
     out.velocity = table.require_vec3("velocity");
     // Ladd's term moves a wall in its own plane; a normal component would push mass through it.
     if (out.velocity[axis] != 0)
@@ -108,9 +124,21 @@ std::vector<std::string> passing(const Config& fluid, const std::vector<Change>&
     if (out.size() == keep) break;
     Config trial = fluid.detached();
     trial.set_override(fluid.path(key) + "=" + value);
+    // Another operator drops the old one's parameter, which it would refuse as unused: named in
+    // the fix if the input sets it to other than its default (a resumed run's config.toml
+    // writes the default out).
+    std::string also;
+    if (key == "collision")
+      for (const auto& [p, op, def] :
+           {std::tuple{"magic", "trt", lbm::Trt::kMagicDefault},
+            std::tuple{"smagorinsky", "les", lbm::RegularizedLes::kSmagorinskyDefault}})
+        if (fluid.has(p) && value.find(op) == std::string::npos) {
+          trial.erase(fluid.path(p));
+          if (fluid.get(p, def) != def) also = " (without " + fluid.path(p) + ")";
+        }
     try {
       read_fluid(trial, lo, hi, periodic, gravity);
-      out.push_back(fluid.path(key) + " = " + value);
+      out.push_back(fluid.path(key) + " = " + value + also);
     } catch (const std::exception&) {
       // this change alone does not pass: not offered
     }
@@ -233,6 +261,12 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
     nu_turbulent_max = c.smagorinsky * c.smagorinsky * c.dx * c.max_speed;
   }
   c.wall_function = fluid.get_bool("wall_function", false);
+  for (int f = 0; f < 6; ++f)
+    if (c.wall_function && c.faces[std::size_t(f)].slip_length > 0)
+      throw InputError(fluid.path("wall_function"), "true",
+                       "the wall function acts on every wall at rest, and face " +
+                           std::string(lbm::BoxFaces::kNames[std::size_t(f)]) + " slips",
+                       "drop fluid.wall_function, or make that face a no-slip wall");
   c.population_storage = fluid.get_choice("population_storage", "double", {"double", "float"});
   // A parameter of another operator would be silently ignored: say so.
   if (fluid.has("magic") && c.collision != "trt")
@@ -343,6 +377,7 @@ lbm::LbmSettings FluidConfig::lattice() const {
     } else {
       out.kind = lbm::FaceKind::wall;
       out.wall_velocity = to_lattice(in.velocity);
+      out.slip = slip_fraction(in);
     }
   }
   const double tau = report.tau;
@@ -356,6 +391,12 @@ lbm::LbmSettings FluidConfig::lattice() const {
   s.storage = population_storage == "float" ? lbm::PopulationStorage::float32
                                             : lbm::PopulationStorage::float64;
   return s;
+}
+
+double FluidConfig::slip_fraction(const FluidFace& face) const {
+  if (face.slip_length == 0) return 0.0;
+  if (std::isinf(face.slip_length)) return 1.0;
+  return face.slip_length / (face.slip_length + 3.0 * report.nu_lattice * dx);
 }
 
 double FluidConfig::rest_density(int x, int y, int z) const {
@@ -415,6 +456,15 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
                 : ""));
   if (f.wall_function)
     log.line("  walls                              Werner-Wengle wall function (walls at rest)");
+  for (int k = 0; k < 6; ++k) {
+    const FluidFace& face = f.faces[std::size_t(k)];
+    if (face.kind != "wall" || face.slip_length == 0) continue;
+    log.derived(std::string("wall ") + std::string(lbm::BoxFaces::kNames[std::size_t(k)]) +
+                    " slip fraction",
+                f.slip_fraction(face), "",
+                std::isinf(face.slip_length) ? "(free slip)"
+                                             : "(slip length " + to_text(face.slip_length) + " m)");
+  }
   log.derived("tau (molecular)", r.tau, "", "(tau - 1/2 = " + to_text(r.tau - 0.5) + ")");
   log.derived("tau effective range", r.tau, "", "to " + to_text(r.tau_effective_max));
   log.derived("nu_lattice", r.nu_lattice, "");

@@ -4,7 +4,7 @@
 // collision operator, body force, initial velocity, faces), checked with lbm::check_stability
 // (tau, lattice Mach, Dp / (rho c_s^2); docs/physics.md, Lattice units and limits) and turned into
 // lbm::LbmSettings. Every value stays in SI here; lattice values only appear in the LbmSettings
-// handed to the solver (STYLE §4).
+// handed to the solver.
 //
 // Keys (all under [fluid]):
 //   density [kg/m^3], viscosity (dynamic) [Pa s], dx [m] (each box edge a whole number of cells),
@@ -17,7 +17,9 @@
 //   population_storage = "double" (default) | "float" (f - w in float, arithmetic in double:
 //   half the memory and the kernel's traffic; lbm/pdf_field.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
-//   [fluid.faces] x_lo .. z_hi = "wall" | "periodic" | {kind = "moving_wall", velocity = [..]} |
+//   [fluid.faces] x_lo .. z_hi = "wall" | "free_slip" | "periodic" |
+//   {kind = "wall", slip_length = b [m]} (Navier slip; 0 no slip, inf free slip) |
+//   {kind = "moving_wall", velocity = [..]} |
 //   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s], ramp_from = [..]
 //   [m/s]} |
 //   {kind = "outlet", pressure = p [Pa, gauge]}.
@@ -42,6 +44,7 @@ struct FluidFace {
   double ramp_start = 0, ramp_time = 0;  // inlet: leaves ramp_from at ramp_start, full after
                                          // ramp_time [s]
   Vec3 ramp_from = Vec3::Zero();         // inlet: the inflow before ramp_start [m/s]
+  double slip_length = 0;                // wall at rest: Navier slip length [m]; inf: free slip
   /// The inflow velocity at time t [m/s] (velocity itself for other kinds): ramp_from until
   /// ramp_start, then linear to velocity over ramp_time (a step when ramp_time = 0).
   Vec3 velocity_at(double t) const {
@@ -88,6 +91,11 @@ struct FluidConfig {
   double rest_density(int x, int y, int z) const;
   /// SI position of a cell centre [m].
   Vec3 cell_centre(int x, int y, int z) const;
+  /// A wall face's slip fraction s for the lattice (lbm/boundary/slip_wall.hpp): the blend of
+  /// bounce-back and specular reflection has the slip length 3 nu_lattice s / (1 - s) cells, so
+  /// s = b / (b + 3 nu_lattice dx) for a slip length b [m] (molecular nu; with LES the eddy
+  /// viscosity shortens it near strained walls); 1 for b = inf, 0 for b = 0.
+  double slip_fraction(const FluidFace& face) const;
 };
 
 /// Reads and checks [fluid] (throws InputError naming the key). `box_periodic`: the DEM box's

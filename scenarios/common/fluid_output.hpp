@@ -17,9 +17,10 @@ namespace lbdem::scenarios {
 /// gas_mean_speed_m_s, gas_kinetic_energy_J, gas_mass_kg, then gas_mass_flow_<face>_kg_s (into
 /// the box during the last gas step) for every inlet and outlet face, then
 /// gas_force_on_walls_{x,y,z}_N: the gas's force on the box faces that are walls (momentum
-/// exchange during the last gas step: the wall shear, and the pressure on walls normal to the
-/// axis), the term that closes a bed's momentum balance with the pressure drop and the particle
-/// forces.
+/// exchange, mean of the last two gas steps: the wall shear, and the pressure on walls normal to
+/// the axis), the term that closes a bed's momentum balance with the pressure drop and the particle
+/// forces, and gas_mass_balance_error_kg: the gas mass less its start and all the boundaries
+/// gave it (round-off; lbm::LbmSolver::exchanged_mass).
 std::vector<std::string> fluid_columns(const FluidConfig& c);
 std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c);
 
