@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "core/error.hpp"
 #include "scenarios/run_command.hpp"
@@ -31,6 +32,25 @@ const KeyDoc* doc_of(const std::string& path) {
   return nullptr;
 }
 
+// What decides which keys the readers ask for: the paths a preset sets, with the text of its
+// string values (choices such as contact.normal select other readers); numbers do not. Presets
+// with the same signature read the same keys, so the collection reads one of them: the jet mill's
+// and the fluidized bed's series differ only in numbers.
+void add_signature(const toml::node& n, const std::string& path, std::string& out) {
+  if (const auto* t = n.as_table()) {
+    for (const auto& [k, v] : *t)
+      add_signature(v, path.empty() ? std::string(k.str()) : path + "." + std::string(k.str()),
+                    out);
+  } else if (const auto* a = n.as_array()) {
+    for (std::size_t i = 0; i < a->size(); ++i)
+      add_signature(*a->get(i), path + "[" + std::to_string(i) + "]", out);
+  } else {
+    out += path;
+    if (const auto* str = n.as_string()) out += "=" + str->get();
+    out += "\n";
+  }
+}
+
 std::string cell(std::string s) {
   std::string out;
   for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
@@ -47,7 +67,11 @@ std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir) 
     for (const auto& e : fs::directory_iterator(source_dir + "/scenarios/" + name + "/presets"))
       if (e.path().extension() == ".toml") files.push_back(e.path().string());
     std::sort(files.begin(), files.end());
+    std::set<std::string> seen;
     for (const std::string& file : files) {
+      std::string signature;
+      add_signature(toml::parse_file(file), "", signature);
+      if (!seen.insert(signature).second) continue;
       const Config cfg = Config::from_file(file);
       try {
         read_as_scenario(name, cfg);

@@ -35,7 +35,8 @@ struct ReferenceKey {
   bool default_varies = false;  // read with different defaults (computed from other keys)
 };
 
-/// Every key read when each scenario is built from each of its presets under `source_dir`.
+/// Every key read when each scenario is built from its presets under `source_dir` (one of each set
+/// of presets that set the same paths and strings: those read the same keys).
 std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir);
 
 /// The markdown reference of `keys`; keys no KeyDoc matches are appended to `undocumented`.
