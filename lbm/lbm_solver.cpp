@@ -138,7 +138,18 @@ void LbmSolver::set_cell(int x, int y, int z, int body) {
                                     std::to_string(z) +
                                     ") holds a mass source and cannot turn solid");
   if (body < 0 || body > body_count()) throw std::invalid_argument("unknown body id");
+  // The mass ledger: a fluid cell that turns solid takes its populations out of total_mass(), a
+  // solid cell that turns fluid brings its own in; booked as exchanged, so the ledger closes.
+  const auto fluid_mass = [&] {
+    if (flags_.at(x, y, z) != kFluid) return 0.0;
+    double f[kQ], m = 0;
+    cell_populations(x, y, z, f);
+    for (double v : f) m += v;
+    return m;
+  };
+  const double before = fluid_mass();
   flags_.set(x, y, z, CellFlag(body));
+  exchanged_mass_ += fluid_mass() - before;
   links_dirty_ = true;
 }
 

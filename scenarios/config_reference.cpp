@@ -33,9 +33,9 @@ const KeyDoc* doc_of(const std::string& path) {
 }
 
 // What decides which keys the readers ask for: the paths a preset sets, with the text of its
-// string values (choices such as contact.normal select other readers); numbers do not. Presets
-// with the same signature read the same keys, so the collection reads one of them: the jet mill's
-// and the fluidized bed's series differ only in numbers.
+// string and boolean values (contact.normal, inflow.enabled select other readers); numbers do
+// not. Presets with the same signature read the same keys, so the collection reads one of them:
+// the jet mill's and the fluidized bed's series differ only in numbers.
 void add_signature(const toml::node& n, const std::string& path, std::string& out) {
   if (const auto* t = n.as_table()) {
     for (const auto& [k, v] : *t)
@@ -47,6 +47,7 @@ void add_signature(const toml::node& n, const std::string& path, std::string& ou
   } else {
     out += path;
     if (const auto* str = n.as_string()) out += "=" + str->get();
+    if (const auto* b = n.as_boolean()) out += b->get() ? "=true" : "=false";
     out += "\n";
   }
 }

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <tuple>
 #include <utility>
+#include <variant>
 
 #include "core/error.hpp"
 #include "lbm/d3q19.hpp"
@@ -43,10 +43,11 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
     out.kind = "wall";
     out.slip_length = std::numeric_limits<double>::infinity();
   } else if (out.kind == "wall") {
-    // Navier's slip length b (u_wall = b du/dn): 0 no slip, inf free slip.
-    out.slip_length = table.get("slip_length", 0.0,
-                                Range::non_negative("give the slip length in m (0: no slip, inf: "
-                                                    "free slip)"));
+    // Navier's slip length b (u_wall = b du/dn): 0 no slip; free slip is the face "free_slip".
+    out.slip_length =
+        table.get("slip_length", 0.0,
+                  Range::non_negative("give the slip length in m (0: no slip), or make the face "
+                                      "\"free_slip\""));
   } else if (out.kind == "moving_wall") {
     out.velocity = table.require_vec3("velocity");
     // Ladd's term moves a wall in its own plane; a normal component would push mass through it.
@@ -106,44 +107,64 @@ int cells_along(const Config& fluid, int axis, double length, double dx) {
 }
 
 // Set while read_fluid reads a changed input to see whether a fix passes, so that the try does
-// not look for fixes of its own.
+// not look for fixes of its own; restored by the guard, whatever a try throws.
 thread_local bool g_trying_fix = false;
+struct TryingFix {
+  bool outer = g_trying_fix;
+  TryingFix() { g_trying_fix = true; }
+  ~TryingFix() { g_trying_fix = outer; }
+  TryingFix(const TryingFix&) = delete;
+  TryingFix& operator=(const TryingFix&) = delete;
+};
 
-using Change = std::pair<std::string, std::string>;  // key under [fluid], value as TOML
+// A change of [fluid]: keys set (value as TOML) and keys dropped, as the message prints it.
+struct Change {
+  std::vector<std::pair<std::string, std::string>> set;
+  std::vector<std::string> drop;
+};
+
+std::string change_text(const Config& fluid, const Change& ch) {
+  std::string s;
+  for (const auto& [k, v] : ch.set) s += (s.empty() ? "" : " and ") + fluid.path(k) + " = " + v;
+  for (const auto& k : ch.drop) s += " (without " + fluid.path(k) + ")";
+  return s;
+}
+
+// The [fluid] reader on a detached copy of the input with the change made: the FluidConfig, or
+// the error it stops with.
+std::variant<FluidConfig, std::string> try_read(const Config& fluid, const Change& ch,
+                                                const Vec3& lo, const Vec3& hi,
+                                                const std::array<bool, 3>& periodic,
+                                                const Vec3& gravity) {
+  const TryingFix guard;
+  try {
+    Config trial = fluid.detached();
+    for (const auto& [k, v] : ch.set) trial.set_override(fluid.path(k) + "=" + v);
+    for (const auto& k : ch.drop) trial.erase(fluid.path(k));
+    return read_fluid(trial, lo, hi, periodic, gravity);
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+}
 
 // Of the changes, in order, those with which the whole of read_fluid passes (every check a run
-// would meet at start-up), as "fluid.key = value"; at most `keep`.
-std::vector<std::string> passing(const Config& fluid, const std::vector<Change>& changes,
-                                 const Vec3& lo, const Vec3& hi,
+// would meet at start-up) and which change what runs (the time step, the grid or the operator:
+// a lower lattice velocity changes nothing where the pressure rule sets dt); at most `keep`.
+std::vector<std::string> passing(const Config& fluid, const FluidConfig& now,
+                                 const std::vector<Change>& changes, const Vec3& lo, const Vec3& hi,
                                  const std::array<bool, 3>& periodic, const Vec3& gravity,
                                  std::size_t keep = 3) {
   std::vector<std::string> out;
-  const bool outer = g_trying_fix;
-  g_trying_fix = true;
-  for (const auto& [key, value] : changes) {
+  for (const Change& ch : changes) {
     if (out.size() == keep) break;
-    Config trial = fluid.detached();
-    trial.set_override(fluid.path(key) + "=" + value);
-    // Another operator drops the old one's parameter, which it would refuse as unused: named in
-    // the fix if the input sets it to other than its default (a resumed run's config.toml
-    // writes the default out).
-    std::string also;
-    if (key == "collision")
-      for (const auto& [p, op, def] :
-           {std::tuple{"magic", "trt", lbm::Trt::kMagicDefault},
-            std::tuple{"smagorinsky", "les", lbm::RegularizedLes::kSmagorinskyDefault}})
-        if (fluid.has(p) && value.find(op) == std::string::npos) {
-          trial.erase(fluid.path(p));
-          if (fluid.get(p, def) != def) also = " (without " + fluid.path(p) + ")";
-        }
-    try {
-      read_fluid(trial, lo, hi, periodic, gravity);
-      out.push_back(fluid.path(key) + " = " + value + also);
-    } catch (const std::exception&) {
-      // this change alone does not pass: not offered
-    }
+    const auto r = try_read(fluid, ch, lo, hi, periodic, gravity);
+    const auto* c = std::get_if<FluidConfig>(&r);
+    if (!c) continue;  // this change alone does not pass: not offered
+    if (c->dt == now.dt && c->dx == now.dx && c->collision == now.collision &&
+        c->smagorinsky == now.smagorinsky)
+      continue;  // passes, but runs the same gas
+    out.push_back(change_text(fluid, ch));
   }
-  g_trying_fix = outer;
   return out;
 }
 
@@ -154,26 +175,27 @@ std::string join_or(const std::vector<std::string>& items) {
 }
 
 // The changes that can cure a gas that will not start (tau too close to 1/2, Mach, Dp) or that
-// diverged: another collision operator, a finer grid (dx / 2 and dx / 3 keep every box edge a
-// whole number of cells), and the time step both ways (a divergence wants it shorter, a tau near
-// 1/2 longer).
-std::vector<Change> gas_changes(const Config& fluid, const FluidConfig& c, bool shorter_first) {
+// diverged: another collision operator (dropping the old one's parameter, which the new one
+// would refuse as unused), a finer grid (dx / 2 and dx / 3 keep every box edge a whole number of
+// cells), and the time step (a divergence wants it shorter, a tau near 1/2 longer), given as
+// fluid.dt: the lattice velocity may not be what sets it.
+std::vector<Change> gas_changes(const Config& fluid, const FluidConfig& c, bool diverged) {
   std::vector<Change> ch;
-  if (c.collision != "les") ch.push_back({"collision", "\"les\""});
-  if (c.collision == "les" && c.smagorinsky < 0.17) ch.push_back({"smagorinsky", "0.17"});
-  if (c.collision == "bgk") ch.push_back({"collision", "\"trt\""});
-  std::vector<Change> step;
-  if (fluid.has("dt")) {
-    step = {{"dt", to_text(0.5 * c.dt, 12)}, {"dt", to_text(2 * c.dt, 12)}};
-  } else {
-    const double ul = fluid.get("lattice_velocity", 0.1);
-    step = {{"lattice_velocity", to_text(0.5 * ul, 12)},
-            {"lattice_velocity", to_text(std::min(0.3, 2 * ul), 12)}};
-  }
-  if (!shorter_first) std::swap(step[0], step[1]);
-  ch.insert(ch.end(), step.begin(), step.end());
-  ch.push_back({"dx", to_text(c.dx / 2, 12)});
-  ch.push_back({"dx", to_text(c.dx / 3, 12)});
+  const auto drop_if_set = [&](const char* key) {
+    return fluid.has(key) ? std::vector<std::string>{key} : std::vector<std::string>{};
+  };
+  // From TRT the fix names its magic parameter whether or not the input sets it: a resumed run's
+  // config.toml writes it out, and its message must read as the first run's did.
+  if (c.collision != "les")
+    ch.push_back(
+        {{{"collision", "\"les\""}},
+         c.collision == "trt" ? std::vector<std::string>{"magic"} : std::vector<std::string>{}});
+  if (c.collision == "les" && c.smagorinsky < 0.17) ch.push_back({{{"smagorinsky", "0.17"}}, {}});
+  if (c.collision == "bgk") ch.push_back({{{"collision", "\"trt\""}}, {}});
+  ch.push_back(
+      {{{"dt", to_text(diverged ? 0.5 * c.dt : 2 * c.dt, 12)}}, drop_if_set("lattice_velocity")});
+  ch.push_back({{{"dx", to_text(c.dx / 2, 12)}}, {}});
+  ch.push_back({{{"dx", to_text(c.dx / 3, 12)}}, {}});
   return ch;
 }
 
@@ -218,9 +240,11 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        "raise fluid.max_speed to at least " + to_text(u.norm()));
   };
   check_speed(fluid.path("initial_velocity"), c.initial_velocity);
-  for (int f = 0; f < 6; ++f)
-    check_speed(faces.path(std::string(lbm::BoxFaces::kNames[std::size_t(f)])) + ".velocity",
-                c.faces[std::size_t(f)].velocity);
+  for (int f = 0; f < 6; ++f) {
+    const std::string face = faces.path(std::string(lbm::BoxFaces::kNames[std::size_t(f)]));
+    check_speed(face + ".velocity", c.faces[std::size_t(f)].velocity);
+    check_speed(face + ".ramp_from", c.faces[std::size_t(f)].ramp_from);
+  }
 
   c.body_force = fluid.get_vec3("body_force", Vec3::Zero());
   c.weighs = fluid.get_bool("gravity", false);
@@ -314,7 +338,8 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
     if (g_trying_fix) throw;
     // Offer only what passes every check a run meets: a longer step or a finer grid may each run
     // into another limit (the pressure rule caps dt; a box edge must stay whole cells).
-    const auto fixes = passing(fluid, gas_changes(fluid, c, false), lo, hi, box_periodic, gravity);
+    const auto fixes =
+        passing(fluid, c, gas_changes(fluid, c, false), lo, hi, box_periodic, gravity);
     throw e.with_fix(fixes.empty()
                          ? "no single change of fluid.collision, fluid.dx or the gas time step "
                            "passes every check; lower fluid.max_speed or "
@@ -334,21 +359,14 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   c.reynolds = c.max_speed * c.reynolds_length / c.nu();
   // What a divergence message may offer: the changes that pass these same checks.
   if (!g_trying_fix) {
-    c.divergence_fixes = passing(fluid, gas_changes(fluid, c, true), lo, hi, box_periodic, gravity);
+    c.divergence_fixes =
+        passing(fluid, c, gas_changes(fluid, c, true), lo, hi, box_periodic, gravity);
     c.try_change = [input = fluid.detached(), lo, hi, box_periodic, gravity](
-                       const std::string& key, const std::string& value) -> std::string {
-      Config trial = input.detached();
-      trial.set_override(trial.path(key) + "=" + value);
-      const bool outer = g_trying_fix;
-      g_trying_fix = true;
-      std::string err;
-      try {
-        read_fluid(trial, lo, hi, box_periodic, gravity);
-      } catch (const std::exception& e) {
-        err = e.what();
-      }
-      g_trying_fix = outer;
-      return err;
+                       const std::vector<std::pair<std::string, std::string>>& set,
+                       const std::vector<std::string>& drop) -> std::string {
+      const auto r = try_read(input, {set, drop}, lo, hi, box_periodic, gravity);
+      const auto* err = std::get_if<std::string>(&r);
+      return err ? *err : std::string();
     };
   }
   return c;

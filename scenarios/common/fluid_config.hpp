@@ -18,7 +18,7 @@
 //   half the memory and the kernel's traffic; lbm/pdf_field.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "free_slip" | "periodic" |
-//   {kind = "wall", slip_length = b [m]} (Navier slip; 0 no slip, inf free slip) |
+//   {kind = "wall", slip_length = b [m]} (Navier slip; 0 no slip) |
 //   {kind = "moving_wall", velocity = [..]} |
 //   {kind = "inlet", velocity = [..], ramp_start = t0 [s], ramp_time = T [s], ramp_from = [..]
 //   [m/s]} |
@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/config.hpp"
@@ -78,9 +79,12 @@ struct FluidConfig {
   /// Changes ("fluid.key = value") that pass every start-up check and may cure a divergence: a
   /// shorter time step, another operator, a finer grid; empty if none does.
   std::vector<std::string> divergence_fixes;
-  /// Reads the same input with one key under [fluid] changed (value as TOML): "" if every
-  /// start-up check passes, else the error. For messages of a running gas that offer a change.
-  std::function<std::string(const std::string& key, const std::string& value)> try_change;
+  /// Reads the same input with keys under [fluid] set (values as TOML) and others dropped: "" if
+  /// every start-up check passes, else the error. For messages of a running gas that offer a
+  /// change: they offer exactly what passed.
+  std::function<std::string(const std::vector<std::pair<std::string, std::string>>& set,
+                            const std::vector<std::string>& drop)>
+      try_change;
 
   double nu() const { return viscosity / density; }  // kinematic [m^2/s]
   lbm::LatticeUnits units() const { return {dx, dt, density}; }
