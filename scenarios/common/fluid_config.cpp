@@ -179,11 +179,8 @@ std::string join_or(const std::vector<std::string>& items) {
 // would refuse as unused), a finer grid (dx / 2 and dx / 3 keep every box edge a whole number of
 // cells), and the time step (a divergence wants it shorter, a tau near 1/2 longer), given as
 // fluid.dt: the lattice velocity may not be what sets it.
-std::vector<Change> gas_changes(const Config& fluid, const FluidConfig& c, bool diverged) {
+std::vector<Change> gas_changes(const FluidConfig& c, bool diverged) {
   std::vector<Change> ch;
-  const auto drop_if_set = [&](const char* key) {
-    return fluid.has(key) ? std::vector<std::string>{key} : std::vector<std::string>{};
-  };
   // From TRT the fix names its magic parameter whether or not the input sets it: a resumed run's
   // config.toml writes it out, and its message must read as the first run's did.
   if (c.collision != "les")
@@ -192,8 +189,11 @@ std::vector<Change> gas_changes(const Config& fluid, const FluidConfig& c, bool 
          c.collision == "trt" ? std::vector<std::string>{"magic"} : std::vector<std::string>{}});
   if (c.collision == "les" && c.smagorinsky < 0.17) ch.push_back({{{"smagorinsky", "0.17"}}, {}});
   if (c.collision == "bgk") ch.push_back({{{"collision", "\"trt\""}}, {}});
-  ch.push_back(
-      {{{"dt", to_text(diverged ? 0.5 * c.dt : 2 * c.dt, 12)}}, drop_if_set("lattice_velocity")});
+  // A step set by the lattice velocity (given or by default) is given as fluid.dt without it, in
+  // the same words whether or not the input names it (a resumed run's config.toml does).
+  ch.push_back({{{"dt", to_text(diverged ? 0.5 * c.dt : 2 * c.dt, 12)}},
+                c.dt_from == "fluid.dt" ? std::vector<std::string>{}
+                                        : std::vector<std::string>{"lattice_velocity"}});
   ch.push_back({{{"dx", to_text(c.dx / 2, 12)}}, {}});
   ch.push_back({{{"dx", to_text(c.dx / 3, 12)}}, {}});
   return ch;
@@ -338,8 +338,7 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
     if (g_trying_fix) throw;
     // Offer only what passes every check a run meets: a longer step or a finer grid may each run
     // into another limit (the pressure rule caps dt; a box edge must stay whole cells).
-    const auto fixes =
-        passing(fluid, c, gas_changes(fluid, c, false), lo, hi, box_periodic, gravity);
+    const auto fixes = passing(fluid, c, gas_changes(c, false), lo, hi, box_periodic, gravity);
     throw e.with_fix(fixes.empty()
                          ? "no single change of fluid.collision, fluid.dx or the gas time step "
                            "passes every check; lower fluid.max_speed or "
@@ -359,8 +358,7 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
   c.reynolds = c.max_speed * c.reynolds_length / c.nu();
   // What a divergence message may offer: the changes that pass these same checks.
   if (!g_trying_fix) {
-    c.divergence_fixes =
-        passing(fluid, c, gas_changes(fluid, c, true), lo, hi, box_periodic, gravity);
+    c.divergence_fixes = passing(fluid, c, gas_changes(c, true), lo, hi, box_periodic, gravity);
     c.try_change = [input = fluid.detached(), lo, hi, box_periodic, gravity](
                        const std::vector<std::pair<std::string, std::string>>& set,
                        const std::vector<std::string>& drop) -> std::string {
