@@ -409,6 +409,13 @@ lbm::LbmSettings FluidConfig::lattice() const {
   return s;
 }
 
+std::string FluidConfig::divergence_fix() const {
+  if (divergence_fixes.empty())
+    return "no single change of fluid.collision, fluid.dx or the gas time step passes the "
+           "start-up checks; lower fluid.max_speed, or the inflow or forcing that drives the gas";
+  return "set " + join_or(divergence_fixes);
+}
+
 double FluidConfig::slip_fraction(const FluidFace& face) const {
   if (face.slip_length == 0) return 0.0;
   if (std::isinf(face.slip_length)) return 1.0;

@@ -79,6 +79,8 @@ struct FluidConfig {
   /// Changes ("fluid.key = value") that pass every start-up check and may cure a divergence: a
   /// shorter time step, another operator, a finer grid; empty if none does.
   std::vector<std::string> divergence_fixes;
+  /// The fix a divergence message gives: those changes, or what to do when none passes.
+  std::string divergence_fix() const;
   /// Reads the same input with keys under [fluid] set (values as TOML) and others dropped: "" if
   /// every start-up check passes, else the error. For messages of a running gas that offer a
   /// change: they offer exactly what passed.

@@ -25,17 +25,6 @@ std::string snapshot_name(std::size_t k) {
   return name;
 }
 
-// The divergence message's fix: only changes that pass the start-up checks (read_fluid).
-std::string divergence_fix(const FluidConfig& c) {
-  if (c.divergence_fixes.empty())
-    return "no single change of fluid.collision, fluid.dx or the gas time step passes the "
-           "start-up checks; lower fluid.max_speed, or the inflow or forcing that drives the gas";
-  std::string s = "set ";
-  for (std::size_t i = 0; i < c.divergence_fixes.size(); ++i)
-    s += (i ? ", or " : "") + c.divergence_fixes[i];
-  return s;
-}
-
 std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.17g", v);
@@ -218,7 +207,7 @@ std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const Flu
          to_text(u.velocity_to_si(bad->speed)) + " m/s (healthy: " + to_text(1 - kHealthyDensity) +
          " - " + to_text(1 + kHealthyDensity) + ", below " +
          to_text(u.velocity_to_si(kHealthySpeed)) +
-         " m/s); the last checkpoint and output are kept; fix: " + divergence_fix(c);
+         " m/s); the last checkpoint and output are kept; fix: " + c.divergence_fix();
 }
 
 std::optional<std::string> check_fluid_mach(const lbm::LbmSolver& s, const FluidConfig& c,

@@ -123,16 +123,6 @@ Bed settle(const std::vector<dem::Wall>& walls, Vec3 lo, Vec3 hi, double r, int 
   return {solver.particles().x, solver.particles().radius};
 }
 
-dem::Wall plane(Vec3 point, Vec3 normal) {
-  dem::Wall w;
-  w.name = "wall";
-  dem::PlaneWall p;
-  p.point = point;
-  p.normal = normal;
-  w.shape = p;
-  return w;
-}
-
 // Mean of a cell field over the gas cells where pick(x, y, z) holds.
 template <class Pick>
 double mean_over(const Grid& g, const std::vector<double>& v,
@@ -264,9 +254,10 @@ TEST_CASE("Kernel walls: a settled bed in a 3-cell-thin walled box reads the bin
   const Grid g(6, 3, 9, {false, false, false});  // 20 x 10 x 30 mm
   const LatticeFrame f{Vec3::Zero(), dx};        // cell (0, 0, 0) spans [0, dx)^3
   const Vec3 lo = Vec3::Zero(), hi(0.02, 0.01, 0.03);
-  const std::vector<dem::Wall> walls = {plane(lo, Vec3::UnitZ()), plane(lo, Vec3::UnitX()),
-                                        plane(hi, -Vec3::UnitX()), plane(lo, Vec3::UnitY()),
-                                        plane(hi, -Vec3::UnitY())};
+  const std::vector<dem::Wall> walls = {
+      test::plane_wall(lo, Vec3::UnitZ()), test::plane_wall(lo, Vec3::UnitX()),
+      test::plane_wall(hi, -Vec3::UnitX()), test::plane_wall(lo, Vec3::UnitY()),
+      test::plane_wall(hi, -Vec3::UnitY())};
   const Bed bed = settle(walls, lo, hi, r, 2400, 0.06, [](const Vec3&) { return true; });
   const auto binned = binned_solid_fraction(g, f, bed.x, bed.r);
   ParticleKernel k(g, f, default_kernel_width(dx, 2 * r));
@@ -317,10 +308,10 @@ TEST_CASE("Kernel walls: a settled bed in a cylinder reads the binned gas fracti
   cw.radius = rc;
   cw.inside = true;
   cyl.shape = cw;
-  const Bed bed = settle({plane(Vec3::Zero(), Vec3::UnitZ()), cyl}, Vec3(cx - rc, cy - rc, 0),
-                         Vec3(cx + rc, cy + rc, 0), r, 2000, 0.07, [&](const Vec3& p) {
-                           return std::hypot(p.x() - cx, p.y() - cy) < rc - 1.1 * r;
-                         });
+  const Bed bed =
+      settle({test::plane_wall(Vec3::Zero(), Vec3::UnitZ()), cyl}, Vec3(cx - rc, cy - rc, 0),
+             Vec3(cx + rc, cy + rc, 0), r, 2000, 0.07,
+             [&](const Vec3& p) { return std::hypot(p.x() - cx, p.y() - cy) < rc - 1.1 * r; });
   // Lattice coordinates of the axis: cell centre i sits at (i + 1/2) dx.
   const auto solid = cylinder_mask(g, cx / dx - 0.5, cy / dx - 0.5, rc / dx);
   const auto binned = binned_solid_fraction(g, f, bed.x, bed.r);

@@ -30,14 +30,21 @@ inline dem::DemSettings settings(double dt, const Vec3& g = Vec3::Zero()) {
   return s;
 }
 
-inline dem::Wall floor_wall(double z = 0, int material = 0) {
+/// A plane wall through `point` with the unit `normal` pointing to the particles' side.
+inline dem::Wall plane_wall(const Vec3& point, const Vec3& normal, int material = 0) {
   dem::Wall w;
-  w.name = "floor";
+  w.name = "wall";
   w.material = material;
   dem::PlaneWall p;
-  p.point = Vec3(0, 0, z);
-  p.normal = Vec3::UnitZ();
+  p.point = point;
+  p.normal = normal;
   w.shape = p;
+  return w;
+}
+
+inline dem::Wall floor_wall(double z = 0, int material = 0) {
+  dem::Wall w = plane_wall(Vec3(0, 0, z), Vec3::UnitZ(), material);
+  w.name = "floor";
   return w;
 }
 
