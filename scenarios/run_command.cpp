@@ -19,6 +19,7 @@
 #include "scenarios/box/box.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
+#include "scenarios/fluidized_bed/validation_study.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"
 #include "scenarios/jet_mill/jet_mill_study.hpp"
@@ -130,6 +131,9 @@ int run_study(const StudyOptions& opt) {
                  "l^2 and l^3 rules: bed height and pressure drop, spectra, table\n";
     std::cout << "rheometer  CG 1 / 1.6 / 2 of the powder rheometer under each scaling rule: "
                  "torque table and plot\n";
+    std::cout << "validation  published bubbling beds (Mueller et al. with no-slip and free-slip "
+                 "gas walls and at CG 1.5 and 2, van Wachem et al.) against their measurements: "
+                 "goals table and figures\n";
     std::cout << "jet_mill  CG-1, 2, 4, 8, 10 of the spiral jet mill, scaled gas cells "
                  "(cg*_fixed: one grid): maps, profiles, kinetic energy, collisions, table; "
                  "--quick: a check in minutes\n";
@@ -150,7 +154,9 @@ int run_study(const StudyOptions& opt) {
   if (opt.name == "rheometer") return run_rheometer_study(opt);
   if (opt.name == "fluidized_bed") return run_fluidized_bed_study(opt);
   if (opt.name == "jet_mill") return run_jet_mill_study(opt);
-  throw InputError("study", opt.name, "unknown study; known: fluidized_bed, jet_mill, rheometer",
+  if (opt.name == "validation") return run_validation_study(opt);
+  throw InputError("study", opt.name,
+                   "unknown study; known: fluidized_bed, jet_mill, rheometer, validation",
                    "run ./lbdem study --list");
 }
 

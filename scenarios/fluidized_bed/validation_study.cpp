@@ -1,0 +1,134 @@
+#include "scenarios/fluidized_bed/validation_study.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/h5.hpp"
+#include "scenarios/common/study_case.hpp"
+
+namespace lbdem::scenarios {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ValidationCase {
+  std::string name, experiment, preset, tool;
+  std::vector<std::string> sets;
+  double from;  // [s] start of the compared window: the bubbling bed after its inflow ramp
+};
+
+// The Mueller bed's side faces as free-slip gas walls (docs/physics.md, Gas boundaries).
+std::vector<std::string> free_slip(std::vector<std::string> more = {}) {
+  std::vector<std::string> s = {"fluid.faces.x_lo=\"free_slip\"", "fluid.faces.x_hi=\"free_slip\"",
+                                "fluid.faces.y_lo=\"free_slip\"", "fluid.faces.y_hi=\"free_slip\""};
+  s.insert(s.end(), more.begin(), more.end());
+  return s;
+}
+
+const std::vector<ValidationCase>& cases() {
+  static const std::vector<ValidationCase> c = {
+      {"mueller_u09",
+       "Mueller et al. 2008/2009, U = 0.9 m/s, no-slip gas walls",
+       "mueller_u09",
+       "mueller_bed.py",
+       {},
+       0.5},
+      {"mueller_u09_slip", "Mueller et al. 2008/2009, U = 0.9 m/s, free-slip gas walls",
+       "mueller_u09", "mueller_bed.py", free_slip(), 0.5},
+      {"vanwachem2001",
+       "van Wachem et al. 2001, U = 0.9 m/s",
+       "vanwachem2001",
+       "vanwachem_bed.py",
+       {},
+       1.5},
+      {"mueller_u09_slip_cg1p5", "Mueller et al., free-slip gas walls, CG l = 1.5", "mueller_u09",
+       "mueller_bed.py", free_slip({"coarse_grain.size_factor=1.5"}), 0.5},
+      {"mueller_u09_slip_cg2", "Mueller et al., free-slip gas walls, CG l = 2", "mueller_u09",
+       "mueller_bed.py", free_slip({"coarse_grain.size_factor=2"}), 0.5},
+  };
+  return c;
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
+// The rows of a goals table after its header.
+std::vector<std::string> goal_rows(const std::string& path) {
+  std::vector<std::string> rows;
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  while (std::getline(f, line))
+    if (!line.empty()) rows.push_back(line);
+  return rows;
+}
+
+// The last field of a CSV row (within_goal: yes, no or -).
+std::string last_field(const std::string& row) {
+  return row.substr(row.rfind(',') + 1);
+}
+
+}  // namespace
+
+int run_validation_study(const StudyOptions& opt) {
+  const std::string python = LBDEM_PYTHON;
+  if (python.empty())
+    throw InputError("LBDEM_PYTHON", "(none)",
+                     "the validation study compares with python3 and numpy, h5py, matplotlib",
+                     "install them (Debian: python3-numpy python3-h5py python3-matplotlib) and "
+                     "reconfigure");
+  std::vector<std::string> names;
+  for (const auto& c : cases()) names.push_back(c.name);
+  check_case_names(opt.cases, names, "validation");
+  const std::string root = opt.out.empty() ? "studies/validation" : opt.out;
+  fs::create_directories(root);
+  const std::string src = LBDEM_SOURCE_DIR;
+  for (const std::size_t k :
+       cases_to_run(opt.cases, names, std::vector<bool>(names.size(), true))) {
+    const ValidationCase& c = cases()[k];
+    const StudyCase sc{c.name, "fluidized_bed",
+                       src + "/scenarios/fluidized_bed/presets/" + c.preset + ".toml", c.sets};
+    if (const int rc = run_study_case(root, sc, opt, "validation study"); rc != 0) return rc;
+  }
+
+  // Every case of the folder that has reached its window, compared with its measurements.
+  std::ostringstream table;
+  table << "case,experiment,quantity,unit,measured,lbdem,difference,goal,within_goal\n";
+  int met = 0, goals = 0;
+  for (const auto& c : cases()) {
+    const std::string dir = root + "/" + c.name;
+    if (last_time(dir + "/timeseries.csv") <= c.from) continue;
+    std::string cmd = quoted(python) + " " + quoted(src + "/tools/" + c.tool) + " " + quoted(dir) +
+                      " --from " + std::to_string(c.from) + " --csv " + quoted(dir + "/goals.csv");
+    if (!opt.no_plots) cmd += " --png " + quoted(dir + "/comparison.png");
+    cmd += " > " + quoted(dir + "/comparison.txt");
+    if (std::system(cmd.c_str()) != 0) {
+      std::cerr << "warning: the comparison of " << c.name << " failed (" << cmd << ")\n";
+      continue;
+    }
+    for (const auto& row : goal_rows(dir + "/goals.csv")) {
+      table << c.name << ",\"" << c.experiment << "\"," << row << "\n";
+      const std::string w = last_field(row);
+      goals += w != "-";
+      met += w == "yes";
+    }
+    if (!opt.no_plots)
+      std::cout << "figure: " << fs::absolute(dir + "/comparison.png").string() << "\n";
+  }
+  write_file_atomic(root + "/validation.csv", table.str());
+  std::cout << "validation study table: " << fs::absolute(root + "/validation.csv").string() << "\n"
+            << table.str() << met << " of " << goals << " goals met\n";
+  return 0;
+}
+
+}  // namespace lbdem::scenarios
