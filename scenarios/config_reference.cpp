@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "scenarios/run_command.hpp"
@@ -52,6 +54,27 @@ void add_signature(const toml::node& n, const std::string& path, std::string& ou
   }
 }
 
+// The probe configs (scenarios/config_reference/README.md) and the mark in them that stands for
+// the source tree.
+constexpr std::string_view kProbeDir = "scenarios/config_reference";
+constexpr std::string_view kSourceDirMark = "@LBDEM_SOURCE_DIR@";
+
+std::vector<std::string> toml_files(const std::string& dir) {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string read_text(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file, "", "cannot read the file", "check the source tree");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::string cell(std::string s) {
   std::string out;
   for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
@@ -62,23 +85,58 @@ std::string cell(std::string s) {
 
 std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir) {
   namespace fs = std::filesystem;
+  const std::vector<std::string> names = scenario_names();
+  // What each scenario reads: its presets, then the probes that name it.
+  struct Input {
+    std::string file, text;
+    bool probe = false;
+  };
+  std::map<std::string, std::vector<Input>> inputs;
+  for (const std::string& name : names) {
+    std::vector<std::string> files = toml_files(source_dir + "/scenarios/" + name + "/presets");
+    for (const std::string& file : files) inputs[name].push_back({file, read_text(file), false});
+    // Of presets that read the same keys the first is read: the one on the coarsest gas grid,
+    // which builds fastest (the jet mill's paper-scale grids take seconds).
+    const auto dx = [](const Input& in) {
+      return toml::parse(in.text, in.file)["fluid"]["dx"].value_or(0.0);
+    };
+    std::stable_sort(inputs[name].begin(), inputs[name].end(),
+                     [&](const Input& a, const Input& b) { return dx(a) > dx(b); });
+  }
+  const std::string probe_dir = source_dir + "/" + std::string(kProbeDir);
+  for (const std::string& file : toml_files(probe_dir)) {
+    std::string text = read_text(file);
+    for (std::size_t at; (at = text.find(kSourceDirMark)) != std::string::npos;)
+      text.replace(at, kSourceDirMark.size(), source_dir);
+    const toml::table t = toml::parse(text, file);
+    const toml::array* to = t["probe_for"].as_array();
+    if (!to || to->empty())
+      throw InputError(file, "", "a probe without probe_for",
+                       "name the scenarios it is read as: probe_for = [\"box\", ...]");
+    for (const auto& n : *to) {
+      const std::string name = n.value_or(std::string());
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        throw InputError(file, name, "probe_for names no scenario",
+                         "name scenarios of ./lbdem run --list");
+      inputs[name].push_back({file, text, true});
+    }
+  }
   std::map<std::string, ReferenceKey> keys;
-  for (const std::string& name : scenario_names()) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(source_dir + "/scenarios/" + name + "/presets"))
-      if (e.path().extension() == ".toml") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
+  for (const std::string& name : names) {
     std::set<std::string> seen;
-    for (const std::string& file : files) {
+    for (const Input& in : inputs[name]) {
       std::string signature;
-      add_signature(toml::parse_file(file), "", signature);
+      add_signature(toml::parse(in.text, in.file), "", signature);
       if (!seen.insert(signature).second) continue;
-      const Config cfg = Config::from_file(file);
+      Config cfg = Config::from_string(in.text, in.file);
+      if (in.probe) cfg.erase("probe_for");
       try {
         read_as_scenario(name, cfg);
       } catch (const InputError& e) {
-        throw InputError(file, "", std::string("preset does not read: ") + e.what(),
-                         "correct the preset");
+        throw InputError(in.file, "",
+                         std::string(in.probe ? "probe" : "preset") + " does not read as " + name +
+                             ": " + e.what(),
+                         in.probe ? "correct the probe" : "correct the preset");
       }
       for (const auto& [path, info] : cfg.read_keys()) {
         auto [it, fresh] = keys.try_emplace(path, ReferenceKey{info, {}, false});
@@ -98,6 +156,16 @@ std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir) 
   return keys;
 }
 
+std::vector<std::string> unread_docs(const std::map<std::string, ReferenceKey>& keys) {
+  std::vector<std::string> out;
+  for (const KeyDoc& d : key_docs()) {
+    bool read = false;
+    for (const auto& [path, k] : keys) read = read || doc_of(path) == &d;
+    if (!read) out.emplace_back(d.pattern);
+  }
+  return out;
+}
+
 std::string reference_markdown(const std::map<std::string, ReferenceKey>& keys,
                                std::vector<std::string>& undocumented) {
   const std::size_t all = scenario_names().size();
@@ -105,9 +173,11 @@ std::string reference_markdown(const std::map<std::string, ReferenceKey>& keys,
       "# Configuration reference\n\n"
       "Generated by `build/bin/lbdem-cli config > docs/config.md` from the code: type, default "
       "and allowed\nrange are what the readers use, collected by reading every preset in "
-      "`scenarios/<name>/presets/`;\nunit and meaning come from `scenarios/config_reference.cpp`. "
-      "A test fails when this file differs\nfrom what the command prints or a key has no "
-      "meaning; edit the code, not this file. How the\ntables fit together, with examples: "
+      "`scenarios/<name>/presets/` and\nthe probe configs in `scenarios/config_reference/`, which "
+      "set the keys no preset needs; unit\nand meaning come from "
+      "`scenarios/config_reference.cpp`. A test fails when this file differs from\nwhat the "
+      "command prints, a key has no meaning or a meaning no key; edit the code, not this\nfile. "
+      "How the tables fit together, with examples: "
       "[user-guide.md](user-guide.md#configuration).\n\n"
       "A path `fill.radius.kind` is the key `kind` in the table `radius` of each `[[fill]]` "
       "entry. \"required\"\nkeys must be given where the table is used; \"depends\" defaults are "
@@ -147,11 +217,16 @@ std::string reference_markdown(const std::map<std::string, ReferenceKey>& keys,
 
 int print_config_reference() {
   std::vector<std::string> undocumented;
-  std::cout << reference_markdown(collect_keys(LBDEM_SOURCE_DIR), undocumented);
+  const auto keys = collect_keys(LBDEM_SOURCE_DIR);
+  std::cout << reference_markdown(keys, undocumented);
   for (const auto& k : undocumented)
     std::cerr << "lbdem: warning: config key " << k
               << " has no unit and meaning in scenarios/config_reference.cpp\n";
-  return undocumented.empty() ? 0 : 1;
+  const std::vector<std::string> unread = unread_docs(keys);
+  for (const auto& p : unread)
+    std::cerr << "lbdem: warning: no preset or probe reads a key of the pattern " << p
+              << " (scenarios/config_reference.cpp; probes: scenarios/config_reference/)\n";
+  return undocumented.empty() && unread.empty() ? 0 : 1;
 }
 
 const std::vector<KeyDoc>& key_docs() {
@@ -285,7 +360,8 @@ const std::vector<KeyDoc>& key_docs() {
       {"fluid.density", "kg/m^3", "gas density"},
       {"fluid.viscosity", "Pa s", "dynamic viscosity of the gas"},
       {"fluid.dx", "m", "lattice cell edge; every box edge must be a whole number of cells"},
-      {"fluid.dt", "s", "gas time step", "lattice_velocity dx / max_speed"},
+      {"fluid.dt", "s", "gas time step (not with lattice_velocity)",
+       "lattice_velocity dx / max_speed"},
       {"fluid.lattice_velocity", "", "lattice velocity of max_speed when dt is not given"},
       {"fluid.max_speed", "m/s", "largest gas speed expected; sizes the step and the Mach checks"},
       {"fluid.pressure_difference", "Pa",
@@ -301,16 +377,23 @@ const std::vector<KeyDoc>& key_docs() {
       {"fluid.body_force", "N/m^3", "body force on the gas per volume"},
       {"fluid.gravity", "", "apply physics.gravity to the gas as well"},
       {"fluid.initial_velocity", "m/s", "uniform gas velocity at the start"},
-      {"fluid.faces.*", "", "gas face given by name (kinds that need values are tables)",
+      {"fluid.faces.*", "",
+       "gas face given by name: wall (no slip), free_slip or periodic; a moving_wall, inlet or "
+       "outlet needs its values and is given as a table (the face's keys below)",
        "periodic where the box face is, else wall"},
-      {"fluid.faces.*.kind", "", "kind of a gas face given as a table"},
-      {"fluid.faces.*.velocity", "m/s", "velocity of a moving wall or an inlet"},
+      {"fluid.faces.*.kind", "",
+       "kind of a gas face given as a table {kind = ..., ...} instead of a name: wall takes "
+       "slip_length, moving_wall velocity, inlet velocity and the ramp, outlet pressure"},
+      {"fluid.faces.*.slip_length", "m",
+       "wall: Navier slip length b, the wall's tangential gas velocity is b du/dn (exact for TRT "
+       "at magic 3/16); 0 no slip; for free slip make the face \"free_slip\""},
+      {"fluid.faces.*.velocity", "m/s",
+       "moving_wall: the wall's velocity, in its plane; inlet: the inflow velocity, into the box"},
       {"fluid.faces.*.pressure", "Pa", "outlet: gauge pressure"},
       {"fluid.faces.*.ramp_start", "s", "inlet: time the ramp from ramp_from to velocity starts"},
       {"fluid.faces.*.ramp_time", "s", "inlet: duration of the linear ramp"},
       {"fluid.faces.*.ramp_from", "m/s",
        "inlet: velocity before the ramp (a multiple of velocity)"},
-      {"fluid.faces.*.slip*", "", "slip face: the share of tangential momentum kept at the wall"},
       {"coupling.two_way", "", "the particles' drag acts back on the gas"},
       {"coupling.drag", "", "drag law"},
       {"coupling.kernel_width", "m",
@@ -332,7 +415,6 @@ const std::vector<KeyDoc>& key_docs() {
       {"bed.height_fraction", "", "the bed height holds this fraction of the particle volume"},
       {"bed.pressure_taps", "m", "the two heights between which the pressure drop is measured",
        "the distributor and the outlet"},
-      {"bed.hamaker", "J", "Hamaker constant of the bed's particles"},
       {"rheometer.cup_radius", "m", "inner radius of the cup"},
       {"rheometer.cup_height", "m", "height of the cup"},
       {"rheometer.blade_span", "m", "tip-to-tip span of the two blades"},
@@ -349,27 +431,37 @@ const std::vector<KeyDoc>& key_docs() {
       {"particles.material", "", "material of the powder, by name", "the first material"},
       {"jet_mill.outlet_radius", "m", "radius of the vortex finder", "0.2 x chamber radius"},
       {"jet_mill.chamber_stl", "",
-       "a closed STL surface around the gas for another chamber shape (empty: the cylinder)"},
-      {"jet_mill.chamber_stl_scale", "", "factor from the STL's units to m"},
-      {"jet_mill.*.count", "", "number of grinding nozzles, equally spaced"},
-      {"jet_mill.*.angle_deg", "degree", "nozzle angle to the wall tangent"},
-      {"jet_mill.*.first_deg", "degree", "azimuth of the first nozzle"},
-      {"jet_mill.*.position_deg", "degree", "azimuth of the feed nozzle",
-       "between the first two grinding nozzles"},
-      {"jet_mill.*.height", "m", "height of the nozzle axis above the floor", "mid-height"},
-      {"jet_mill.*.diameter", "m", "nozzle exit diameter"},
-      {"jet_mill.*.speed", "m/s", "jet exit speed (incompressible jet)"},
-      {"jet_mill.*.mass_flow", "kg/s", "jet mass flow", "rho U pi d^2 / 4"},
-      {"jet_mill.*.supply_pressure", "Pa",
-       "absolute supply pressure of an ideal convergent nozzle (instead of speed)"},
-      {"jet_mill.*.supply_temperature", "K", "supply temperature"},
-      {"jet_mill.*.ambient_pressure", "Pa", "absolute pressure in the chamber"},
-      {"jet_mill.*.source_speed", "m/s",
-       "speed the notional source is sized for (at most fluid.max_speed)", "fluid.max_speed"},
-      {"jet_mill.classifier.radius", "m", "radius of the classifier ring"},
+       "path of a closed STL surface around the gas, for another chamber shape than the box's "
+       "inscribed cylinder (not with a classifier ring)",
+       "the cylinder"},
+      {"jet_mill.chamber_stl_scale", "", "factor from the STL's units to m (1e-3 for mm)"},
+      {"jet_mill.classifier.radius", "m",
+       "mean radius of a classifier ring hanging from the top plate between the outlet and the "
+       "grinding zone (the ring is there when [jet_mill.classifier] is; not with chamber_stl)"},
       {"jet_mill.classifier.thickness", "m", "wall thickness of the ring (at least sqrt(2) cells)",
        "1.5 dx"},
-      {"jet_mill.classifier.height", "m", "height of the ring below the top plate"},
+      {"jet_mill.classifier.height", "m", "how far the ring reaches below the top plate"},
+      {"jet_mill.feed.position_deg", "degree",
+       "feed injector: azimuth on the wall, counter-clockwise from +x",
+       "between the first two grinding nozzles"},
+      {"jet_mill.feed.source_speed", "m/s",
+       "feed injector: speed its notional source is sized for (at most fluid.max_speed)",
+       "jet_mill.nozzles.source_speed"},
+      {"jet_mill.*.count", "", "number of grinding nozzles, equally spaced"},
+      {"jet_mill.*.angle_deg", "degree", "nozzle angle to the wall tangent"},
+      {"jet_mill.*.first_deg", "degree", "azimuth of the first nozzle (counter-clockwise from +x)"},
+      {"jet_mill.*.height", "m", "height of the nozzle axis above the floor", "mid-height"},
+      {"jet_mill.*.diameter", "m", "nozzle exit diameter"},
+      {"jet_mill.*.speed", "m/s",
+       "jet exit speed of an incompressible jet (not with supply_pressure)"},
+      {"jet_mill.*.mass_flow", "kg/s", "jet mass flow (with speed)", "rho U pi d^2 / 4"},
+      {"jet_mill.*.supply_pressure", "Pa",
+       "absolute supply pressure of an ideal convergent nozzle (instead of speed and mass_flow)"},
+      {"jet_mill.*.supply_temperature", "K", "supply temperature (with supply_pressure)"},
+      {"jet_mill.*.ambient_pressure", "Pa",
+       "absolute pressure in the chamber (with supply_pressure)"},
+      {"jet_mill.*.source_speed", "m/s",
+       "speed the notional source is sized for (at most fluid.max_speed)", "fluid.max_speed"},
   };
   return table;
 }

@@ -4,12 +4,16 @@
 // What a key is comes from two places. Type, default, allowed range and choices are what the
 // readers themselves pass to the Config getters (Config::read_keys()), collected by reading every
 // preset in scenarios/<name>/presets/ as its scenario: nothing is written twice, and a changed
-// default or bound changes the reference. Unit and meaning cannot be taken from a getter call, so
-// they are a table here (config_reference.cpp), keyed by path pattern; the generator joins the two
-// and names every read key the table does not cover, so the test (tests/scenarios/
-// test_config_doc.cpp) fails on an undocumented key as on a stale docs/config.md. A table beside
-// the readers keeps the readers' code as it is (no unit and meaning argument on every getter call)
-// at the price of one list to extend when a key is added; the test says which.
+// default or bound changes the reference. Keys no preset sets (walls, explicit particles, the
+// other forms of a gas face, the jet mill's feed, ...) come from probe configs in
+// scenarios/config_reference/, each read as the scenarios its probe_for list names (README.md
+// there). Unit and meaning cannot be taken from a getter call, so they are a table here
+// (config_reference.cpp), keyed by path pattern; the generator joins the two and names every read
+// key the table does not cover and every table entry no read key falls under, so the test
+// (tests/scenarios/test_config_doc.cpp) fails on an undocumented key, on a documented key that
+// nothing reads and on a stale docs/config.md. A table beside the readers keeps the readers' code
+// as it is (no unit and meaning argument on every getter call) at the price of one list to extend
+// when a key is added (and a probe, if no preset sets it); the test says which.
 #include <map>
 #include <set>
 #include <string>
@@ -35,9 +39,13 @@ struct ReferenceKey {
   bool default_varies = false;  // read with different defaults (computed from other keys)
 };
 
-/// Every key read when each scenario is built from its presets under `source_dir` (one of each set
-/// of presets that set the same paths and strings: those read the same keys).
+/// Every key read when each scenario is built from its presets and its probes under `source_dir`
+/// (one of each set of inputs that set the same paths and strings: those read the same keys).
 std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir);
+
+/// The patterns of key_docs() that no key of `keys` falls under (the first match wins): entries
+/// for keys that nothing reads, or that no preset or probe reaches.
+std::vector<std::string> unread_docs(const std::map<std::string, ReferenceKey>& keys);
 
 /// The markdown reference of `keys`; keys no KeyDoc matches are appended to `undocumented`.
 std::string reference_markdown(const std::map<std::string, ReferenceKey>& keys,

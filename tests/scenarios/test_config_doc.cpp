@@ -12,19 +12,63 @@ using namespace lbdem::scenarios;
 
 TEST_CASE("docs/config.md is the generated reference and documents every key read", "[scenarios]") {
   // Builds each scenario from one preset of every kind (presets that differ only in numbers
-  // read the same keys): about 2 s in Release.
+  // read the same keys) and from the probes: about 2 s in Release.
   const auto keys = collect_keys(LBDEM_SOURCE_DIR);
   std::vector<std::string> undocumented;
   const std::string md = reference_markdown(keys, undocumented);
-  INFO("keys read by a preset without a unit and meaning in scenarios/config_reference.cpp");
-  for (const auto& k : undocumented) CHECK(k == "");
-  // Keys every scenario reads, and some only one does: the collection reached all readers.
-  for (const char* k : {"scenario", "run.end_time", "dem.dt", "contact.normal", "fluid.dx",
-                        "coupling.drag", "rheometer.fill_mass", "jet_mill.nozzles.angle_deg",
-                        "bed.height_fraction", "fill.radius.kind", "particles.radius.kind"}) {
+  {
+    INFO(
+        "keys read by a preset or probe without a unit and meaning in "
+        "scenarios/config_reference.cpp");
+    for (const auto& k : undocumented) CHECK(k == "");
+  }
+  {
+    INFO(
+        "patterns in scenarios/config_reference.cpp that no key read by a preset or probe falls "
+        "under: a key nothing reads, or one to set in a probe (scenarios/config_reference/)");
+    for (const auto& p : unread_docs(keys)) CHECK(p == "");
+  }
+  // Keys every scenario reads, some only one does, and some only the probes set: the collection
+  // reached all readers, in each form of an input that has several.
+  for (const char* k : {"scenario",
+                        "run.end_time",
+                        "dem.dt",
+                        "contact.normal",
+                        "fluid.dx",
+                        "coupling.drag",
+                        "rheometer.fill_mass",
+                        "jet_mill.nozzles.angle_deg",
+                        "bed.height_fraction",
+                        "fill.radius.kind",
+                        "particles.radius.kind",
+                        "walls.kind",
+                        "walls.file",
+                        "particle.position",
+                        "outlet.check_every",
+                        "fluid.faces.x_lo",
+                        "fluid.faces.x_lo.kind",
+                        "fluid.faces.x_lo.slip_length",
+                        "fluid.faces.z_hi.velocity",
+                        "fluid.faces.y_hi.ramp_from",
+                        "fluid.faces.z_lo.pressure",
+                        "jet_mill.feed.speed",
+                        "jet_mill.feed.supply_pressure",
+                        "jet_mill.classifier.radius",
+                        "jet_mill.chamber_stl",
+                        "coarse_grain.particles_per_parcel",
+                        "particles.radius.sigma"}) {
     CAPTURE(k);
     CHECK(keys.count(k) == 1);
   }
+  // Every face takes every key of each kind in every scenario that reads it.
+  for (const char* face : {"x_lo", "x_hi", "y_lo", "y_hi", "z_lo", "z_hi"})
+    for (const char* key : {"", ".kind", ".slip_length", ".velocity", ".ramp_start", ".ramp_time",
+                            ".ramp_from", ".pressure"}) {
+      const std::string path = std::string("fluid.faces.") + face + key;
+      CAPTURE(path);
+      REQUIRE(keys.count(path) == 1);
+      CHECK(keys.at(path).scenarios.count("box") == 1);
+    }
   std::ifstream in(std::string(LBDEM_SOURCE_DIR) + "/docs/config.md");
   std::stringstream committed;
   committed << in.rdbuf();
