@@ -18,7 +18,8 @@ Coupler::Coupler(lbm::LbmSolver& gas, const lbm::LatticeFrame& frame,
     : gas_(gas),
       units_(units),
       s_(s),
-      kernel_(gas.grid(), frame, s.kernel_width, ParticleKernel::solid_mask(gas.flags())) {
+      kernel_(gas.grid(), frame, s.kernel_width, ParticleKernel::solid_mask(gas.flags()),
+              s.particle_box) {
   if (!(s_.size_factor >= 1)) throw std::invalid_argument("coupling: size factor must be >= 1");
   if (!(s_.viscosity > 0)) throw std::invalid_argument("coupling: gas viscosity must be > 0");
   if (!(s_.eps_min > 0 && s_.eps_min < 1))
@@ -134,7 +135,11 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   if (!s_.two_way) return lap.to(Phase::coupling_interpolation_drag);
 
   // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
-  // explicit rest, sum_p (beta_p v_p - F_gradp,p) K_p / dx^3 - (1 - eps) rho_f g (see the header).
+  // explicit rest, sum_p (beta_p v_p - F_gradp,p) K_p / dx^3 - (1 - eps) a rho_f g (see the
+  // header): (1 - eps) a is the particles' volume per cell volume, a the part of the particles'
+  // box the cell stands for (kernel.hpp), so the weight taken out is that of the gas the
+  // particles displace, which the deposited reactions of their pressure-gradient forces give back
+  // in a resting gas.
   work_.resize(np);
 #pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
   for (std::size_t k = 0; k < np; ++k) work_[k] = beta_[k] * v_p_[k] - f_grad_[k];
@@ -142,10 +147,11 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   const double drag_to_lattice = units_.dt / units_.rho;   // (A / eps) [SI] -> alpha [lattice]
   const double force_to_lattice = units_.force_density_to_lattice(1.0);
   force_lat_.resize(ncell);
+  const std::vector<double>& volume = kernel_.accessible();
 #pragma omp parallel for schedule(static) if (many_cells)
   for (std::size_t c = 0; c < ncell; ++c) {
     alpha_[c] = cell_scalar_[c] / eps_[c] * drag_to_lattice;
-    force_lat_[c] = force_to_lattice * (cell_vec_[c] - (1 - eps_[c]) * s_.gas_weight);
+    force_lat_[c] = force_to_lattice * (cell_vec_[c] - (1 - eps_[c]) * volume[c] * s_.gas_weight);
     if (!source_lat_.empty()) force_lat_[c] += source_lat_[c];
   }
   gas_.set_porosity_field(eps_, alpha_);

@@ -43,6 +43,7 @@
 #include "lbm/lbm_solver.hpp"
 #include "lbm/units.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace lbdem::coupling {
@@ -57,6 +58,9 @@ struct CouplerSettings {
   double viscosity = 0;            // gas dynamic viscosity mu [Pa s]
   Vec3 gas_weight = Vec3::Zero();  // rho_f g [N/m^3] if the gas's uniform body force is its weight:
                                    // the exchange removes (1 - eps) of it (set II: eps rho_f g)
+  // The particles' box where its faces are not the grid's (kernel.hpp): the outer cells then
+  // stand for more or less than their own volume of it.
+  std::optional<ParticleBox> particle_box;
 };
 
 /// What one interval's exchange did (SI), for the time series and the log.

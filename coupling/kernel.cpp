@@ -56,7 +56,8 @@ void grow(std::vector<double>& v, std::size_t n) {
 }  // namespace
 
 ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
-                               std::span<const std::uint8_t> solid)
+                               std::span<const std::uint8_t> solid,
+                               const std::optional<ParticleBox>& box)
     : grid_(grid), frame_(frame), width_(width), dx_(frame.dx) {
   // Below sigma = dx the filter has fewer than 5 taps, and the trilinear step's share of the
   // variance, f (1 - f) (0 to 1/4 cell^2 with the position in the cell), would dominate the width.
@@ -92,6 +93,39 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
     require_size(solid.size(), ncell, "solid mask");
     for (std::size_t c = 0; c < ncell; ++c) gas_[c] = solid[c] ? 0 : 1;
   }
+  // Per axis and coordinate: the cells of the particles' box a grid cell stands for. The outer
+  // cell of a non-periodic axis reaches to the box's face, beyond its own face where the box is
+  // larger, short of it where the grid sticks out.
+  std::array<std::vector<double>, 3> along;
+  for (int a = 0; a < 3; ++a) {
+    const int n = grid_.extent(a);
+    auto& v = along[std::size_t(a)];
+    v.assign(std::size_t(n), 1.0);
+    if (!box || grid_.periodic(a)) continue;
+    // Extensions beyond the grid's faces [cells]; within 1e-9 of a cell is the face itself (the
+    // tolerance of scenarios/common/fluid_config.cpp for an edge of whole cells).
+    double ext[2] = {(frame_.origin[a] - box->lo[a]) / dx_,
+                     (box->hi[a] - (frame_.origin[a] + n * dx_)) / dx_};
+    for (double& e : ext) {
+      if (std::abs(e) <= 1e-9) e = 0;
+      if (!(std::abs(e) < 1))
+        throw std::invalid_argument(
+            "ParticleKernel: a face of the particles' box lies a cell or more from the grid's");
+    }
+    v.front() += ext[0];
+    v.back() += ext[1];
+    if (!(v.front() > 0 && v.back() > 0))
+      throw std::invalid_argument("ParticleKernel: the particles' box is empty along an axis");
+  }
+  volume_.assign(ncell, 0.0);
+  for (int z = 0; z < grid_.nz(); ++z)
+    for (int y = 0; y < grid_.ny(); ++y)
+      for (int x = 0; x < grid_.nx(); ++x) {
+        const auto c = std::size_t(cell(x, y, z));
+        if (gas_[c])
+          volume_[c] =
+              along[0][std::size_t(x)] * along[1][std::size_t(y)] * along[2][std::size_t(z)];
+      }
   for (int a = 0; a < 3; ++a) {
     const int n = grid_.extent(a);
     auto& list = tap_list_[std::size_t(a)];
@@ -109,25 +143,28 @@ ParticleKernel::ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& f
 void ParticleKernel::balance() {
   const auto ncell = std::size_t(grid_.cells());
   // The mirrored filter G is symmetric with unit row and column sums: on a box without solid
-  // cells d = 1 (post = 1, pre = 1 / sum of the taps). Solid cells take rows and columns out of
-  // it; d then solves d (G m d) = 1 on the gas cells (symmetric Sinkhorn-Knopp balancing by
-  // Knight's iteration d <- sqrt(d / G m d), P. A. Knight 2008, SIAM J. Matrix Anal. Appl. 30,
-  // 261), which converges linearly, about a decade per 3 iterations for these kernels.
+  // cells, whose cells all stand for one cell of it, d = 1 (post = 1, pre = 1 / sum of the taps).
+  // Solid cells take rows and columns out of it, and outer cells of a grid centred on a box of
+  // other size weigh a != 1; d then solves d (G m d) = 1 on the gas cells (Sinkhorn-Knopp
+  // balancing by Knight's iteration d <- sqrt(d / G m d), P. A. Knight 2008, SIAM J. Matrix Anal.
+  // Appl. 30, 261: symmetric for m of 0 and 1, and with e = sqrt(m) d the symmetric balance of
+  // sqrt(m) G sqrt(m) to row sums m otherwise), which converges linearly, about a decade per 3
+  // iterations for these kernels.
   std::vector<double> d(ncell, 1.0), in, gd;
-  const bool any_solid = std::find(gas_.begin(), gas_.end(), 0) != gas_.end();
+  const bool uniform = std::all_of(volume_.begin(), volume_.end(), [](double m) { return m == 1; });
   balance_error_ = 0;
   for (int it = 0;; ++it) {
     in.resize(ncell);
     const bool par = grid_.cells() >= kMinParallelCells;
 #pragma omp parallel for schedule(static) if (par)
-    for (std::size_t c = 0; c < ncell; ++c) in[c] = gas_[c] ? d[c] : 0.0;
+    for (std::size_t c = 0; c < ncell; ++c) in[c] = volume_[c] * d[c];
     filter(in, gd, 1);
     double err = 0;
 #pragma omp parallel for schedule(static) reduction(max : err) if (par)
     for (std::size_t c = 0; c < ncell; ++c)
       if (gas_[c]) err = std::max(err, std::abs(d[c] * gd[c] - 1.0));
     balance_error_ = err;
-    if (!any_solid || err <= kBalanceTolerance || it == kBalanceIterations) break;
+    if (uniform || err <= kBalanceTolerance || it == kBalanceIterations) break;
 #pragma omp parallel for schedule(static) if (par)
     for (std::size_t c = 0; c < ncell; ++c)
       if (gas_[c]) d[c] = std::sqrt(d[c] / gd[c]);
@@ -139,7 +176,7 @@ void ParticleKernel::balance() {
   post_.resize(ncell);
   for (std::size_t c = 0; c < ncell; ++c) {
     pre_[c] = gd[c] > 0 ? 1.0 / gd[c] : 0.0;
-    post_[c] = gas_[c] ? d[c] : 0.0;
+    post_[c] = volume_[c] * d[c];
   }
 }
 
@@ -641,7 +678,7 @@ PorosityReport ParticleKernel::gas_fraction(std::span<const double> radii, doubl
       eps[c] = 1.0;
       continue;
     }
-    const double e = 1.0 - eps[c];
+    const double e = 1.0 - eps[c] / volume_[c];  // phi over the part of the box the cell holds
     lowest = std::min(lowest, e);
     if (e < eps_min) {
       ++clipped;

@@ -14,12 +14,17 @@
 // cell it reflects to (more than once if the kernel is wider than the box), so G stays symmetric
 // with unit row and column sums. Solid cells (m = 0) receive nothing: post = m d and
 // pre = 1 / (G m d), with d the symmetric balancing d (G m d) = 1 on the gas cells (d = 1 without
-// solid cells). So each column sums to 1 exactly, sum_c' K_p(c') = 1 to round-off wherever a
-// particle is (volume and force conserved at walls, solids and faces), and each row sums to 1 to
-// the balance error: a bed of uniform solid fraction deposits a uniform field up to walls and
-// solids. The alternative, renormalising each source cell over the gas cells it reaches
-// (G / Z(c)), conserves too but piles the share of the cells next to a wall onto the cells a
-// little further in: on a settled bed in a 3-cell-thin walled box (test_kernel_walls.cpp) it read
+// solid cells). Where the particles' box is not the grid (an edge of round(L/dx) cells centred on
+// it, scenarios/common/fluid_config.cpp), a cell of the outer layer holds the particles of the
+// part of the box it stands for, a = 0.75-1.25 of a cell (more than its own volume where the grid
+// is smaller than the box, less where it sticks out): m = a there, so that a bed of uniform solid
+// fraction phi deposits phi a dx^3 in each cell, and the solid fraction is the deposit over
+// a dx^3 (docs/physics.md, Coupling kernel). So each column sums to 1 exactly, sum_c' K_p(c') = 1
+// to round-off wherever a particle is (volume and force conserved at walls, solids and faces), and
+// each row sums to 1 to the balance error: a bed of uniform solid fraction deposits a uniform field
+// up to walls and solids. The alternative, renormalising each source cell over the gas cells it
+// reaches (G / Z(c)), conserves too but piles the share of the cells next to a wall onto the cells
+// a little further in: on a settled bed in a 3-cell-thin walled box (test_kernel_walls.cpp) it read
 // a solid fraction of 0.68 in the middle layer and 0.52 at the walls, where binning the beads
 // gives 0.58 and 0.545; this kernel reads 0.55 in both. A particle reads a field back with the same
 // K_p, so deposition and interpolation are transposes of each other. K_p is continuous and
@@ -52,6 +57,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -83,6 +89,12 @@ inline double default_kernel_width(double dx, double parcel_diameter) {
 /// and the 1/eps terms of the porous LBM form (lbm/forcing/porous.hpp) within a factor 3.3.
 inline constexpr double kDefaultEpsMin = 0.3;
 
+/// The particles' box where it differs from the gas grid along a non-periodic axis by less than a
+/// cell: each face of the grid within a cell of the box's (periodic axes are the grid's).
+struct ParticleBox {
+  Vec3 lo, hi;  // [m]
+};
+
 /// What gas_fraction() clipped.
 struct PorosityReport {
   Index clipped = 0;                        // gas cells where 1 - phi < eps_min, set to eps_min
@@ -103,9 +115,12 @@ class ParticleKernel {
 
   /// width: sigma [m], at least frame.dx (std::invalid_argument otherwise). solid: one byte per
   /// interior cell in compact order, nonzero where there is no gas; empty: every cell is gas.
+  /// box: the particles' box, if its faces are not the grid's (std::invalid_argument if one lies
+  /// a cell or more from the grid's); a face within 1e-9 of a cell of the grid's is the grid's.
   /// Fewer than 2^32 - 1 cells (32-bit cell indices; std::invalid_argument otherwise).
   ParticleKernel(const lbm::Grid& grid, const lbm::LatticeFrame& frame, double width,
-                 std::span<const std::uint8_t> solid = {});
+                 std::span<const std::uint8_t> solid = {},
+                 const std::optional<ParticleBox>& box = std::nullopt);
 
   /// The solver's geometry as a solid mask for the constructor (interior cells, compact order).
   static std::vector<std::uint8_t> solid_mask(const lbm::FlagField& flags);
@@ -116,9 +131,15 @@ class ParticleKernel {
   const std::vector<double>& taps() const { return taps_; }  // g(0..H), sum over -H..H is 1
   double cell_volume() const { return dx_ * dx_ * dx_; }     // [m^3]
 
+  /// Per cell (compact order): the part of the particles' box it stands for, in cells (a product
+  /// of 0.75-1.25 per axis in the outer layer of a grid centred on a box of other size, 1
+  /// elsewhere), 0 in solid cells: the kernel's fluid weight m.
+  const std::vector<double>& accessible() const { return volume_; }
+
   /// Places the particles (positions [m]): trilinear weights and cell bins, reused by every
-  /// deposit and interpolation until the next call. Positions outside the box on a non-periodic
-  /// axis are taken at the box face; periodic axes wrap. O(N) with a serial counting sort.
+  /// deposit and interpolation until the next call. Positions outside the grid on a non-periodic
+  /// axis (a box larger than the grid) are taken at the grid's face, which hands them to the
+  /// outer cell that stands for them; periodic axes wrap. O(N) with a serial counting sort.
   void locate(std::span<const Vec3> positions);
   std::size_t particle_count() const { return weight_.size(); }
   /// Largest |d (G m d) - 1| over the gas cells after the balancing: how far a uniform source
@@ -133,14 +154,17 @@ class ParticleKernel {
   std::size_t unmapped_count() const { return unmapped_; }
   Index first_unmapped() const { return first_unmapped_; }
 
-  /// Gas fraction eps = 1 - phi per cell, phi = sum_p V_p K_p / dx^3 with V_p = 4/3 pi r_p^3: a
-  /// parcel's own radius already holds its originals' volume, so no multiplicity enters. Clipped
-  /// below at eps_min; solid cells read 1 (they hold no particle volume).
+  /// Gas fraction eps = 1 - phi per cell, phi = sum_p V_p K_p / (a dx^3) with V_p = 4/3 pi r_p^3
+  /// and a = accessible(): a parcel's own radius already holds its originals' volume, so no
+  /// multiplicity enters. Clipped below at eps_min; solid cells read 1 (they hold no particle
+  /// volume). The particles' volume is sum_c (1 - eps) a dx^3 where nothing is clipped.
   PorosityReport gas_fraction(std::span<const double> radii, double eps_min,
                               std::vector<double>& eps) const;
 
   /// Density per unit volume of per-particle quantities q_p: out(c) = sum_p q_p K_p(c) / dx^3
-  /// (e.g. forces [N] -> force density [N/m^3]); sum_c out(c) dx^3 = sum_p q_p to round-off.
+  /// (e.g. forces [N] -> force density [N/m^3]); sum_c out(c) dx^3 = sum_p q_p to round-off. Per
+  /// gas cell volume dx^3, also in an outer cell whose a is not 1: that cell's gas receives
+  /// exactly what its particles give (momentum to round-off).
   void deposit(std::span<const double> q, std::vector<double>& out) const;
   void deposit(std::span<const Vec3> q, std::vector<Vec3>& out) const;
   /// Both deposits at once (one filter over four components, bitwise the same as two calls).
@@ -150,8 +174,8 @@ class ParticleKernel {
   /// Values at the particles of a cell field (compact order; solid cells are not read):
   /// out_p = sum_c K_p(c) field(c). Exact for a constant field; for a linear one wherever the
   /// kernel reaches neither a face nor a solid cell (symmetric taps, trilinear weights) and the
-  /// balancing leaves d = 1 (no solid cells in the grid; near solids d decays to 1 within a few
-  /// kernel widths).
+  /// balancing leaves d = 1 (no solid cells in the grid and a = 1 in every cell; near solids and
+  /// faces d decays to 1 within a few kernel widths).
   void interpolate(std::span<const double> field, std::vector<double>& out) const;
   void interpolate(std::span<const Vec3> field, std::vector<Vec3>& out) const;
   /// Both interpolations at once (one filter over four components, bitwise the same as two calls).
@@ -231,7 +255,8 @@ class ParticleKernel {
   // Sets pre_ and post_ (and balance_error_) from the mask and the filter.
   void balance();
 
-  std::vector<std::uint8_t> gas_;  // m per cell
+  std::vector<std::uint8_t> gas_;  // 1 on gas cells, 0 on solid ones
+  std::vector<double> volume_;     // m per cell: accessible(), 0 on solid cells
   std::vector<double> pre_;        // 1 / (G m d) per source cell, 0 where no gas is in reach
   std::vector<double> post_;       // m d per receiving cell
   double balance_error_ = 0;

@@ -32,6 +32,13 @@ CouplingConfig read_coupling(const Config& c, const FluidConfig& fluid, double d
                     {0, 1, true, true, "give the lower bound of the gas fraction, e.g. 0.3"});
   s.pressure_gradient = c.get_bool("pressure_gradient", true);
   s.gas_weight = gas_weighs ? Vec3(fluid.density * gravity) : Vec3(Vec3::Zero());
+  // The kernel's outer cells stand for the part of the particles' box they hold (a grid centred on
+  // an edge that is not whole cells, fluid_config.cpp); an edge of whole cells is the grid's,
+  // exactly (fluid_config.cpp takes an edge within 1e-9 relative of whole cells for whole).
+  coupling::ParticleBox box{fluid.lo, fluid.hi()};
+  for (int a = 0; a < 3; ++a)
+    if (fluid.wall_offset(a) != 0) box.lo[a] = fluid.box_lo[a], box.hi[a] = fluid.box_hi[a];
+  s.particle_box = box;
   out.exchange_every = int(c.get_int(
       "exchange_every", 1, Range::closed(1, 1e6, "give the coupling cycles per exchange, >= 1")));
   return out;

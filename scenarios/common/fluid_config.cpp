@@ -91,18 +91,35 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
   return out;
 }
 
-// A box edge as a whole number of cells within 1e-9 relative (a wall off by a fraction of a cell
-// would move the half-way bounce-back wall away from the DEM wall).
-int cells_along(const Config& fluid, int axis, double length, double dx) {
+// The gas cells along a box edge, and how far the grid's faces lie outside the box's [m].
+// Periodic: a whole number of cells within 1e-9 relative, since the gas and the particles share
+// one period (a grid of another length would wrap the gas at another place than the particles).
+// Otherwise n = round(L/dx) cells centred on the edge: the half-way bounce-back walls at the
+// grid's faces then lie (n dx - L)/2, at most dx/4, outside (or inside) the particles' walls,
+// which stay where the box puts them (docs/physics.md, Gas boundaries). An edge within 1e-9 of
+// whole cells is whole: offset exactly 0, the grid exactly on the box.
+int cells_along(const Config& fluid, int axis, double length, double dx, bool periodic,
+                double& offset) {
   const double r = length / dx;
   const double n = std::round(r);
-  if (n < 1 || std::abs(r - n) > 1e-9 * r)
+  offset = 0;
+  if (n >= 1 && std::abs(r - n) <= 1e-9 * r) return static_cast<int>(n);
+  if (periodic)
     throw InputError(fluid.path("dx"), to_text(dx),
-                     "the box edge along " + std::string(kAxes[axis]) + " (" + to_text(length) +
-                         " m) is " + to_text(r) + " cells, not a whole number",
+                     "the periodic box edge along " + std::string(kAxes[axis]) + " (" +
+                         to_text(length) + " m) is " + to_text(r) +
+                         " cells, not a whole number; the gas and the particles share one period",
                      // 12 digits: a suggestion that passes the 1e-9 check when typed in
                      "choose dx = L/n, e.g. " + to_text(length / std::max(1.0, std::floor(r)), 12) +
                          " or " + to_text(length / std::ceil(r), 12) + " m");
+  if (n < 1)
+    throw InputError(fluid.path("dx"), to_text(dx),
+                     "the box edge along " + std::string(kAxes[axis]) + " (" + to_text(length) +
+                         " m) is " + to_text(r) +
+                         " cells, under half a cell: its gas walls would lie more than dx/4 from "
+                         "the particles' walls",
+                     "choose dx <= " + to_text(length, 12) + " m (one cell across that edge)");
+  offset = 0.5 * (n * dx - length);
   return static_cast<int>(n);
 }
 
@@ -176,7 +193,7 @@ std::string join_or(const std::vector<std::string>& items) {
 
 // The changes that can cure a gas that will not start (tau too close to 1/2, Mach, Dp) or that
 // diverged: another collision operator (dropping the old one's parameter, which the new one
-// would refuse as unused), a finer grid (dx / 2 and dx / 3 keep every box edge a whole number of
+// would refuse as unused), a finer grid (dx / 2 and dx / 3 keep a periodic edge a whole number of
 // cells), and the time step (a divergence wants it shorter, a tau near 1/2 longer), given as
 // fluid.dt: the lattice velocity may not be what sets it.
 std::vector<Change> gas_changes(const FluidConfig& c, bool diverged) {
@@ -204,12 +221,19 @@ std::vector<Change> gas_changes(const FluidConfig& c, bool diverged) {
 FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        const std::array<bool, 3>& box_periodic, const Vec3& gravity) {
   FluidConfig c;
-  c.lo = lo;
+  c.box_lo = lo;
+  c.box_hi = hi;
   c.density = fluid.require("density", Range::positive("give the gas density in kg/m^3"));
   c.viscosity = fluid.require("viscosity",
                               Range::positive("give the dynamic viscosity in Pa s (air 1.8e-5)"));
   c.dx = fluid.require("dx", Range::positive("give the cell size in m"));
-  for (int a = 0; a < 3; ++a) c.cells[std::size_t(a)] = cells_along(fluid, a, hi[a] - lo[a], c.dx);
+  c.lo = lo;
+  for (int a = 0; a < 3; ++a) {
+    double offset = 0;
+    c.cells[std::size_t(a)] =
+        cells_along(fluid, a, hi[a] - lo[a], c.dx, box_periodic[std::size_t(a)], offset);
+    c.lo[a] -= offset;  // the grid centred on the edge
+  }
 
   const Config faces = fluid.section("faces");
   std::array<bool, 3> periodic{};
@@ -438,6 +462,14 @@ Vec3 FluidConfig::cell_centre(int x, int y, int z) const {
   return lo + dx * Vec3(x + 0.5, y + 0.5, z + 0.5);
 }
 
+Vec3 FluidConfig::hi() const {
+  return lo + dx * Vec3(cells[0], cells[1], cells[2]);
+}
+
+double FluidConfig::wall_offset(int axis) const {
+  return box_lo[axis] - lo[axis];
+}
+
 SubCycle conform_dem_step(double dem_dt, double gas_dt) {
   SubCycle s;
   s.dem_dt_asked = dem_dt;
@@ -464,6 +496,20 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
                   to_text(n * (f.population_storage == "float" ? 76e-6 : 152e-6)) + " MB of " +
                   f.population_storage + " populations");
   log.derived("cell size dx", f.dx, "m");
+  // Edges that are not whole cells: where the gas walls sit against the particles' (cells_along),
+  // in mm for the cells of beds and mills, in m for larger ones.
+  const auto length = [&](double v) {
+    return f.dx < 0.1 ? to_text(1e3 * v) + " mm" : to_text(v) + " m";
+  };
+  for (int a = 0; a < 3; ++a) {
+    const double off = f.wall_offset(a);
+    if (off == 0) continue;
+    std::string name = std::string("gas walls along ") + kAxes[a];
+    name.resize(34, ' ');
+    log.line("  " + name + " " + length(std::abs(off)) + (off > 0 ? " outside" : " inside") +
+             " the particle walls (n = " + std::to_string(f.cells[std::size_t(a)]) + " cells of " +
+             length(f.dx) + " for a " + length(f.box_hi[a] - f.box_lo[a]) + " edge)");
+  }
   log.derived("gas time step dt", f.dt, "s", "(" + f.dt_from + ")");
   if (sub.dem_per_gas > 1)
     log.derived("DEM steps per gas step", sub.dem_per_gas, "",

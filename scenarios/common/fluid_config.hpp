@@ -7,7 +7,9 @@
 // handed to the solver.
 //
 // Keys (all under [fluid]):
-//   density [kg/m^3], viscosity (dynamic) [Pa s], dx [m] (each box edge a whole number of cells),
+//   density [kg/m^3], viscosity (dynamic) [Pa s], dx [m] (a periodic box edge a whole number of
+//   cells; any other edge L gets round(L/dx) cells centred on it, gas walls within dx/4 of the
+//   particles' walls),
 //   dt [s] or lattice_velocity [-] (dt = lattice_velocity dx / max_speed, lowered to keep the
 //   static Dp within 1 % of rho c_s^2), max_speed [m/s], pressure_difference [Pa] (default: the
 //   hydrostatic sum_a |F_a| L_a of the force density F over the wall-bounded axes),
@@ -71,9 +73,12 @@ struct FluidConfig {
   bool weighs = false;                   // body_force includes the gas's weight rho g
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]
   std::array<FluidFace, 6> faces;        // x_lo, x_hi, y_lo, y_hi, z_lo, z_hi
-  Vec3 lo = Vec3::Zero();                // box corner [m]
+  Vec3 lo = Vec3::Zero();                // lower corner of the gas grid [m]
   std::array<int, 3> cells{};            // per axis
-  std::string dt_from;                   // how dt was chosen (banner)
+  // The particles' box [m]. On a non-periodic axis whose edge L is not a whole number of cells
+  // the grid of n = round(L/dx) cells is centred on it: lo = box_lo - wall_offset.
+  Vec3 box_lo = Vec3::Zero(), box_hi = Vec3::Zero();
+  std::string dt_from;                       // how dt was chosen (banner)
   double reynolds = 0, reynolds_length = 0;  // max_speed L / nu and its L [m]
   lbm::StabilityReport report{};
   /// Changes ("fluid.key = value") that pass every start-up check and may cure a divergence: a
@@ -97,6 +102,12 @@ struct FluidConfig {
   double rest_density(int x, int y, int z) const;
   /// SI position of a cell centre [m].
   Vec3 cell_centre(int x, int y, int z) const;
+  /// Upper corner of the gas grid, lo + cells dx [m].
+  Vec3 hi() const;
+  /// How far the gas walls along `axis` lie outside the particles' walls [m]: (n dx - L) / 2,
+  /// negative where they lie inside, within dx/4 either way; exactly 0 for a whole number of
+  /// cells and on periodic axes.
+  double wall_offset(int axis) const;
   /// A wall face's slip fraction s for the lattice (lbm/boundary/slip_wall.hpp): the blend of
   /// bounce-back and specular reflection has the slip length 3 nu_lattice s / (1 - s) cells, so
   /// s = b / (b + 3 nu_lattice dx) for a slip length b [m] (molecular nu; with LES the eddy

@@ -23,17 +23,20 @@ FluidizedBedScenario::FluidizedBedScenario(const Config& cfg) : box_(cfg) {
                      "set fluid.faces.z_hi = {kind = \"outlet\", pressure = 0.0}");
   u_in_ = f.faces[4].velocity.z();
   const Config bed = cfg.section("bed");
-  const double z_lo = f.lo.z(), z_hi = f.lo.z() + f.cells[2] * f.dx;
+  const double z_lo = f.lo.z(), z_hi = f.hi().z();
   fraction_ = bed.get("height_fraction", 0.95,
                       {0, 1, true, false, "give the particle volume fraction, e.g. 0.95"});
   // Default: the distributor and the outlet, so that the drop carries all of the bed's weight
-  // (the kernel spreads the lowest particles' forces into the first cells).
+  // (the kernel spreads the lowest particles' forces into the first cells). A tap at or beyond a
+  // gas face reads that face (plane_pressure), so the particles' floor and roof are taps too where
+  // the gas grid is shorter than the box (fluid_config.cpp centres it on the box).
   const std::vector<double> def = {z_lo, z_hi};
-  const std::vector<double> taps = bed.get_list("pressure_taps", def);
-  if (taps.size() != 2 || !(taps[0] < taps[1]) || taps[0] < z_lo || taps[1] > z_hi)
+  std::vector<double> taps = bed.get_list("pressure_taps", def);
+  const double lowest = std::min(z_lo, f.box_lo.z()), highest = std::max(z_hi, f.box_hi.z());
+  if (taps.size() != 2 || !(taps[0] < taps[1]) || taps[0] < lowest || taps[1] > highest)
     throw InputError(
         bed.path("pressure_taps"), list_text(taps), "two heights inside the column, lower first",
-        "give [z_low, z_high] in m within [" + to_text(z_lo) + ", " + to_text(z_hi) + "]");
+        "give [z_low, z_high] in m within [" + to_text(lowest) + ", " + to_text(highest) + "]");
   taps_ = {taps[0], taps[1]};
   const auto mats = cfg.table_array("materials");
   hamaker_original_ = mats.empty() ? 0.0 : mats.front().get("hamaker", 0.0);
@@ -68,9 +71,9 @@ double FluidizedBedScenario::bed_height() const {
   double sum = 0;
   for (const auto k : order) {
     sum += p.radius[k] * p.radius[k] * p.radius[k];
-    if (sum >= fraction_ * total) return p.x[k].z() - box_.fluid().lo.z();
+    if (sum >= fraction_ * total) return p.x[k].z() - box_.fluid().box_lo.z();
   }
-  return p.x[order.back()].z() - box_.fluid().lo.z();
+  return p.x[order.back()].z() - box_.fluid().box_lo.z();
 }
 
 double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>& p) const {
@@ -78,7 +81,9 @@ double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>&
   // At the distributor or the outlet: the gas's push on that face (its momentum-exchange force)
   // per area, what a tap in the plate reads, rather than an extrapolation of the cell planes over
   // the half cell next to it, where the bed's lowest forces sit.
-  const double z_hi = f.lo.z() + f.cells[2] * f.dx;
+  // The gas's cross-section: the pressure acts over the grid, whose walls may lie up to dx/4
+  // outside or inside the particles' (fluid_config.cpp).
+  const double z_hi = f.hi().z();
   const double area = f.cells[0] * f.dx * f.cells[1] * f.dx;
   if (z <= f.lo.z() || z >= z_hi) {
     const lbm::LbmSolver& gas = *box_.gas();
@@ -110,10 +115,11 @@ double FluidizedBedScenario::bed_voidage(double height) const {
   const auto& eps = box_.coupler()->eps();
   const auto& g = box_.gas()->grid();
   const auto& flags = box_.gas()->flags();
-  // Cell planes whose centres lie below the bed height less two kernel widths (the smeared top).
-  const double top = height - 2 * box_.coupler()->settings().kernel_width;
+  // Cell planes whose centres lie below the bed height (above the particles' floor) less two
+  // kernel widths (the smeared top).
+  const double top = f.box_lo.z() + height - 2 * box_.coupler()->settings().kernel_width;
   double sum = 0, cells = 0;
-  for (int z = 0; z < f.cells[2] && (z + 0.5) * f.dx < top; ++z)
+  for (int z = 0; z < f.cells[2] && f.lo.z() + (z + 0.5) * f.dx < top; ++z)
     for (int y = 0; y < f.cells[1]; ++y)
       for (int x = 0; x < f.cells[0]; ++x)
         if (flags.at(x, y, z) == lbm::kFluid)
@@ -133,7 +139,9 @@ void FluidizedBedScenario::bed_banner(Log& log) const {
   const auto& p = box.solver().particles();
   const auto& mats = box.solver().materials();
   const Vec3 g = box.solver().settings().gravity;
+  // The gas's cross-section carries the bed's weight; the particles' holds the bed.
   const double area = f.cells[0] * f.dx * f.cells[1] * f.dx;
+  const Vec3 edge = f.box_hi - f.box_lo;
   double mass = 0, vol = 0, d_parcel = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
     mass += p.mass[k];
@@ -158,11 +166,11 @@ void FluidizedBedScenario::bed_banner(Log& log) const {
               "(U = " + to_text(u_in_) + " m/s, from " + to_text(f.faces[4].ramp_from.norm()) +
                   " m/s at t = " + to_text(f.faces[4].ramp_start) + " s over " +
                   to_text(f.faces[4].ramp_time) + " s)");
-  const double h_static = vol / (0.6 * area);
+  const double h_static = vol / (0.6 * edge.x() * edge.y());
   log.derived("static bed height at solid fraction 0.6", h_static, "m",
               "(" + to_text(h_static / d_parcel) + " parcels high)");
-  log.derived("parcels across the bed", f.cells[0] * f.dx / d_parcel, "",
-              "x " + to_text(f.cells[1] * f.dx / d_parcel) + " (width / parcel diameter)");
+  log.derived("parcels across the bed", edge.x() / d_parcel, "",
+              "x " + to_text(edge.y() / d_parcel) + " (width / parcel diameter)");
   if (hamaker_original_ > 0) {
     // Bond number F_vdW(h_min) / (m g), equal spheres: F = A d / (24 h_min^2) (docs/physics.md, Van
     // der Waals cohesion).

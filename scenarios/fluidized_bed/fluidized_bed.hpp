@@ -3,12 +3,13 @@
 // box with a gas inlet (distributor) at the bottom and a pressure outlet at the top, particles
 // poured and settled, the gas started or ramped, two-way coupled (BoxScenario with [fluid] and
 // [coupling]). It adds what the study compares, in timeseries.csv:
-//   bed_height_m      the height above the distributor below which bed.height_fraction (0.95) of
-//                     the particle volume lies,
+//   bed_height_m      the height above the particles' floor (box.lo, the distributor within
+//                     dx/4) below which bed.height_fraction (0.95) of the particle volume lies,
 //   pressure_drop_Pa  the plane-averaged gauge pressure at bed.pressure_taps[0] minus that at
 //                     bed.pressure_taps[1] (heights in m; default the distributor and the outlet,
-//                     where the gas's force on the face per area is read), so it holds the bed's
-//                     weight and the gas's tiny hydrostatic head between the taps,
+//                     where the gas's force on the face per area of the gas grid is read; a
+//                     tap at or beyond a gas face reads that face), so it holds the bed's weight
+//                     and the gas's tiny hydrostatic head between the taps,
 //   bed_voidage       the mean gas fraction of the kernel's eps field over the cells below the bed
 //                     height less two kernel widths (the smeared top surface left out),
 // and a banner with the bed's weight per area (less buoyancy, the fluidized pressure drop), the

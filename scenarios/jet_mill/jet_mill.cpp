@@ -24,6 +24,20 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
           "[jet_mill]",
           key == std::string("walls") ? "remove [[walls]]" : "feed the particles through [inflow]");
   const FluidConfig& f = box_.fluid();
+  // The chamber (jet_mill_geometry.cpp) is built on the gas grid, its floor the box's z_lo face:
+  // a grid centred on edges that are not whole cells would part the two by up to dx/4.
+  for (int a = 0; a < 3; ++a)
+    if (f.wall_offset(a) != 0) {
+      const double l = f.box_hi[a] - f.box_lo[a];
+      throw InputError("fluid.dx", to_text(f.dx),
+                       "the jet mill's box edge along " + std::string(1, char('x' + a)) + " (" +
+                           to_text(l) + " m) is " + to_text(l / f.dx) +
+                           " cells; its chamber is built on the gas cells, so every edge must be "
+                           "a whole number of them",
+                       "choose dx = L/n, e.g. " +
+                           to_text(l / std::max(1.0, std::floor(l / f.dx)), 12) + " or " +
+                           to_text(l / std::ceil(l / f.dx), 12) + " m");
+    }
   static const char* kFaces[6] = {"x_lo", "x_hi", "y_lo", "y_hi", "z_lo", "z_hi"};
   for (int a = 0; a < 6; ++a)
     if (f.faces[std::size_t(a)].kind != "wall")

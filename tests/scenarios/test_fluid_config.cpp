@@ -160,7 +160,7 @@ TEST_CASE("Gas stability errors and divergence messages offer only changes that 
   // A gas that starts: what a divergence would offer passes and changes what runs (a shorter
   // step, a finer grid or another operator: a lower lattice velocity would not change dt, which
   // the pressure rule sets here), and try_change tells a change that passes from one that does
-  // not (dx no longer a divisor of the box edges).
+  // not (a cell more than twice as wide as the 10 mm edge).
   Config c = Config::from_string(kThinBedGas);
   c.set_override("fluid.collision=\"les\"");
   const FluidConfig f = read_gas(c);
@@ -177,7 +177,7 @@ TEST_CASE("Gas stability errors and divergence messages offer only changes that 
   }
   REQUIRE(f.try_change);
   CHECK(f.try_change({{"dx", "0.001"}}, {}) == "");
-  CHECK(f.try_change({{"dx", "0.0007"}}, {}).find("whole number") != std::string::npos);
+  CHECK(f.try_change({{"dx", "0.03"}}, {}).find("under half a cell") != std::string::npos);
 }
 
 TEST_CASE("Slip walls from the config: free_slip, a slip length, and what they refuse",
