@@ -156,6 +156,20 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   }
   gas_.set_porosity_field(eps_, alpha_);
   gas_.set_force_field(force_lat_);
+  if (s_.displaced_gas) {
+    // The solids volume flux j [m/s] and the gas each cell loses per step to the particles that
+    // crowd into it, -dt div j (lattice density 1 per unit cell volume).
+#pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
+    for (std::size_t k = 0; k < np; ++k)
+      work_[k] = (4.0 / 3.0 * kPi * p.radius[k] * p.radius[k] * p.radius[k]) * v_p_[k];
+    kernel_.deposit(work_, cell_vec_);
+    kernel_.divergence(cell_vec_, displaced_);
+    const double per_step = -units_.dt;
+#pragma omp parallel for schedule(static) if (many_cells)
+    for (std::size_t c = 0; c < ncell; ++c) displaced_[c] *= per_step;
+    gas_.set_mass_source_field(np ? std::span<const double>(displaced_)
+                                  : std::span<const double>());
+  }
   empty_fields_set_ = np == 0;
   if (empty_fields_set_) empty_report_ = report_;
   lap.to(Phase::coupling_interpolation_drag);

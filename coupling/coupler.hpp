@@ -16,9 +16,20 @@
 // accuracy, and every force the particles feel from the gas is taken from the gas to round-off.
 // A quiescent gas over a settled bed is then hydrostatic, grad p = rho_f g, whatever eps does.
 // (GZ read rho c_s^2 as eps p; with that reading a resting bed would push p by its own eps
-// pattern.) Left out: d(eps)/dt in the gas continuity equation (GZ), the grad(eps) terms of the
-// averaged viscous stress, and the other interphase forces (virtual mass, lift, Basset), small
-// for particle/gas density ratios of 10^3.
+// pattern.)
+//
+// Continuity: d(eps rho_f)/dt + div(rho_f u) = 0, so div u = -d(eps)/dt for a gas of nearly
+// constant density: particles that crowd into a cell push its gas out. GZ's lattice form has
+// div u = 0; without the term a dense plug spanning the bed passes the whole inflow through itself
+// whatever it does, its slip is U/eps - v instead of (U - v)/eps, and the drag damps its motion by
+// eps times too little, which favours slugging. The particles' own continuity gives the term
+// without any history: d(eps)/dt = -d(phi)/dt = div j, with j = sum_p V_p v_p K_p / dx^3 the
+// deposited solids volume flux, so the gas receives the mass source -rho_f div j per unit volume
+// (settings.displaced_gas), at the lattice's reference density (its density departs from it by
+// O(Ma^2), about 1 %). The divergence is conservative with no flux through walls or solids
+// (ParticleKernel::divergence): the sources add to zero up to round-off. Left out: the grad(eps)
+// terms of the averaged viscous stress, and the other interphase forces (virtual mass, lift,
+// Basset), small for particle/gas density ratios of 10^3.
 //
 // Time stepping: an exchange interval holds a whole number of gas steps and of DEM steps. At its
 // start, begin_interval() maps the particles (eps, drag coefficients beta_p from the slip then,
@@ -61,6 +72,7 @@ struct CouplerSettings {
   // The particles' box where its faces are not the grid's (kernel.hpp): the outer cells then
   // stand for more or less than their own volume of it.
   std::optional<ParticleBox> particle_box;
+  bool displaced_gas = true;  // d(eps)/dt in the gas's continuity equation (see the header)
 };
 
 /// What one interval's exchange did (SI), for the time series and the log.
@@ -111,6 +123,7 @@ class Coupler {
   int steps_ = 0, steps_done_ = 0;
   std::vector<double> eps_, alpha_, beta_, radius_, cell_scalar_, eps_p_, pressure_;
   std::vector<Vec3> cell_vec_, force_lat_, v_p_, f_grad_, acc_, u_p_, work_, u_sum_, source_lat_;
+  std::vector<double> displaced_;  // the displaced gas's mass source per gas step [lattice units]
   ExchangeReport report_;
   // Two-way: the gas holds the fields of an interval without particles (eps = 1, no drag, the
   // source alone), and that interval's report. A following interval without particles would set

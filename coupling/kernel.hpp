@@ -198,6 +198,12 @@ class ParticleKernel {
   /// 0), which are all that interpolate() reads of it at those particles.
   void pressure_gradient(std::span<const double> p, std::vector<Vec3>& grad,
                          bool reached_only = false) const;
+  /// The divergence of a flux field j per gas cell [1/dx units of j] in conservative form:
+  /// div(c) = sum over c's six faces of the outward face flux / dx, the face flux the mean of the
+  /// two cells' normal components, 0 on faces to a solid cell or out of a non-periodic box (no
+  /// particle crosses a wall). Each face's flux leaves one cell and enters the other, so the sum
+  /// of div over the cells is 0 up to round-off. Solid cells read 0. (kernel_divergence.cpp)
+  void divergence(std::span<const Vec3> j, std::vector<double>& div) const;
 
  private:
   // Fields of nc components are interleaved: component a of cell c at c * nc + a. Each component

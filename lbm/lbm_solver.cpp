@@ -2,6 +2,7 @@
 
 #include "core/phase_timer.hpp"
 
+#include "core/deterministic_sum.hpp"
 #include "core/error.hpp"
 #include "core/parallel_for.hpp"
 #include "lbm/equilibrium.hpp"
@@ -404,10 +405,29 @@ void LbmSolver::set_mass_sources(std::vector<MassSource> sources) {
   mass_sources_ = std::move(sources);
 }
 
+void LbmSolver::set_mass_source_field(std::span<const double> mass) {
+  const Grid& g = grid();
+  if (!mass.empty() && mass.size() != std::size_t(g.cells()))
+    throw std::invalid_argument("mass source field: " + std::to_string(mass.size()) +
+                                " values for " + std::to_string(g.cells()) + " interior cells");
+  for (int z = 0; z < g.nz() && !mass.empty(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const double m = mass[std::size_t(g.compact_index(x, y, z))];
+        if (std::isfinite(m) && (m == 0 || flags_.fluid(g.index(x, y, z)))) continue;
+        throw std::invalid_argument("mass source field: cell (" + std::to_string(x) + ", " +
+                                    std::to_string(y) + ", " + std::to_string(z) + ") " +
+                                    (std::isfinite(m) ? "is solid" : "is not finite"));
+      }
+  mass_source_field_.assign(mass.begin(), mass.end());
+  mass_source_field_sum_ = deterministic_sum(
+      mass_source_field_.size(), [&](std::size_t c) { return mass_source_field_[c]; }, 0.0);
+}
+
 double LbmSolver::mass_source_rate() const {
   double sum = 0;
   for (const MassSource& m : mass_sources_) sum += m.mass;
-  return sum;
+  return sum + mass_source_field_sum_;
 }
 
 void LbmSolver::add_mass_sources() {
@@ -423,6 +443,23 @@ void LbmSolver::add_mass_sources() {
         slot = PopulationCodec<T>::store(PopulationCodec<T>::load(slot, q) + kW[q] * m.mass, q);
       }
     }
+    if (mass_source_field_.empty()) return;
+    // Every cell: each writes only its own populations, so the planes go to the threads.
+    const Grid& g = grid();
+    const int nx = g.nx(), ny = g.ny(), nz = g.nz();
+#pragma omp parallel for schedule(static)
+    for (int z = 0; z < nz; ++z)
+      for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+          const double m = mass_source_field_[std::size_t(g.compact_index(x, y, z))];
+          if (m == 0) continue;
+          const T* in[kQ];
+          read_pointers(pdf, state_, x, y, z, in);
+          for (int q = 0; q < kQ; ++q) {
+            T& slot = *const_cast<T*>(in[q]);
+            slot = PopulationCodec<T>::store(PopulationCodec<T>::load(slot, q) + kW[q] * m, q);
+          }
+        }
   });
 }
 
@@ -430,6 +467,12 @@ std::vector<double> LbmSolver::level_flux(std::span<const int> level, int levels
   std::vector<AddedMass> added;
   added.reserve(mass_sources_.size());
   for (const MassSource& m : mass_sources_) added.push_back({grid().index(m.x, m.y, m.z), m.mass});
+  const Grid& g = grid();
+  for (int z = 0; z < g.nz() && !mass_source_field_.empty(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x)
+        if (const double m = mass_source_field_[std::size_t(g.compact_index(x, y, z))]; m != 0)
+          added.push_back({g.index(x, y, z), m});
   return with_pdf(
       [&](const auto& pdf) { return lbm::level_flux(pdf, state_, flags_, level, levels, added); });
 }

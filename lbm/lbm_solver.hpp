@@ -161,7 +161,12 @@ class LbmSolver {
     double mass;
   };
   void set_mass_sources(std::vector<MassSource> sources);
-  /// Sum of the sources' mass per step [lattice units].
+  /// A mass source in every interior cell at once (compact order, mass per step [lattice units];
+  /// empty: none), applied as set_mass_sources' are and beside them; solid cells must hold 0. The
+  /// coupling's displaced gas (coupling/coupler.hpp) is one. Throws std::invalid_argument for a
+  /// wrong size, a non-finite entry or a nonzero one in a solid cell.
+  void set_mass_source_field(std::span<const double> mass);
+  /// Sum of the sources' mass per step, listed and field [lattice units].
   double mass_source_rate() const;
   /// Fluid fraction over interior cells in compact order (1 without porosity, 0 in solids).
   void porosity(std::vector<double>& eps) const;
@@ -266,8 +271,10 @@ class LbmSolver {
   std::array<int, 6> face_body_{};
   std::array<std::vector<double>, 3> force_;
   std::vector<MassSource> mass_sources_;
-  std::vector<double> eps_, alpha_;  // per storage cell, when porosity is enabled
-  std::vector<double> inv_eps_;      // 1 / eps_, what the kernel reads (no division per cell)
+  std::vector<double> mass_source_field_;  // per interior cell, compact order; empty: none
+  double mass_source_field_sum_ = 0;       // its sum, bitwise independent of the thread count
+  std::vector<double> eps_, alpha_;        // per storage cell, when porosity is enabled
+  std::vector<double> inv_eps_;            // 1 / eps_, what the kernel reads (no division per cell)
   mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
   // rho and u / eps of the last collision per storage cell, kept while a body has the wall
   // function (forcing/moment_store.hpp); empty otherwise.

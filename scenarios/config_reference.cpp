@@ -256,8 +256,12 @@ const std::vector<KeyDoc>& key_docs() {
       {"output.collisions.grid_cells", "",
        "cells per axis of the spatial collision grid in collisions.h5"},
       {"physics.gravity", "m/s^2", "gravitational acceleration"},
-      {"box.lo", "m", "lower corner of the particle domain (and of the gas)"},
-      {"box.hi", "m", "upper corner of the particle domain (and of the gas)"},
+      {"box.lo", "m",
+       "lower corner of the particle domain; the gas grid is centred on the box (where an edge is "
+       "not whole cells, its corner lies within dx/4 of this)"},
+      {"box.hi", "m",
+       "upper corner of the particle domain; the gas grid is centred on the box (where an edge is "
+       "not whole cells, its corner lies within dx/4 of this)"},
       {"box.*_lo", "",
        "lower face along that axis for the particles: a wall, periodic (in pairs) or open "
        "(particles leave)"},
@@ -359,7 +363,9 @@ const std::vector<KeyDoc>& key_docs() {
       {"outlet.check_every", "", "steps between outlet checks"},
       {"fluid.density", "kg/m^3", "gas density"},
       {"fluid.viscosity", "Pa s", "dynamic viscosity of the gas"},
-      {"fluid.dx", "m", "lattice cell edge; every box edge must be a whole number of cells"},
+      {"fluid.dx", "m",
+       "lattice cell edge; a periodic box edge must be a whole number of cells, any other edge L "
+       "gets round(L/dx) cells centred on it (gas walls within dx/4 of the particles')"},
       {"fluid.dt", "s", "gas time step (not with lattice_velocity)",
        "lattice_velocity dx / max_speed"},
       {"fluid.lattice_velocity", "", "lattice velocity of max_speed when dt is not given"},
@@ -404,6 +410,8 @@ const std::vector<KeyDoc>& key_docs() {
       {"coupling.pressure_gradient", "",
        "apply -V_p grad p to the particles and its reaction to the gas"},
       {"coupling.exchange_every", "", "coupling cycles per momentum exchange"},
+      {"coupling.displaced_gas", "",
+       "d(eps)/dt in the gas continuity equation: moving particles push their gas out (two-way)"},
       {"coarse_grain.size_factor", "", "parcel radius / original radius l"},
       {"coarse_grain.particles_per_parcel", "",
        "originals per parcel l^3 (instead of size_factor)"},

@@ -31,6 +31,7 @@ CouplingConfig read_coupling(const Config& c, const FluidConfig& fluid, double d
   s.eps_min = c.get("eps_min", coupling::kDefaultEpsMin,
                     {0, 1, true, true, "give the lower bound of the gas fraction, e.g. 0.3"});
   s.pressure_gradient = c.get_bool("pressure_gradient", true);
+  s.displaced_gas = c.get_bool("displaced_gas", true);
   s.gas_weight = gas_weighs ? Vec3(fluid.density * gravity) : Vec3(Vec3::Zero());
   // The kernel's outer cells stand for the part of the particles' box they hold (a grid centred on
   // an edge that is not whole cells, fluid_config.cpp); an edge of whole cells is the grid's,
@@ -68,7 +69,8 @@ void coupling_banner(Log& log, const CouplingConfig& c, const FluidConfig& fluid
            (s.two_way ? "two-way" : "one-way (the gas does not feel the particles)") +
            ", Zhou et al. 2010 set II on the Guo-Zhao LBM; drag law " +
            std::string(coupling::name_of(s.drag)) +
-           (s.pressure_gradient ? " + pressure-gradient force" : ""));
+           (s.pressure_gradient ? " + pressure-gradient force" : "") +
+           (s.two_way && s.displaced_gas ? "; d(eps)/dt in the gas continuity" : ""));
   // Single-particle terminal velocity of one original (Schiller-Naumann, no buoyancy), the
   // speed scale of a settling or fluidized particle, by bisection.
   const double g = 9.81, m_o = c.particle_density * kPi * d_o * d_o * d_o / 6;
