@@ -31,18 +31,27 @@ void DemSolver::rebuild() {
                        "shorter than two interaction cut-offs (" + to_text(2 * cell) + " m)",
                        "make the periodic box longer or the particles smaller");
   const std::size_t n = p_.size();
-  if (dom.any_periodic())
-    for (auto& x : p_.x) x = dom.wrap(x);
+  if (dom.any_periodic()) {
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+    for (std::size_t k = 0; k < n; ++k) p_.x[k] = dom.wrap(p_.x[k]);
+  }
 
-  // Removals: flagged (outlet) or lost through a non-periodic face.
+  // Removals: flagged (outlet) or lost through a non-periodic face. Found in parallel, booked in
+  // index order.
   remove_flag_.resize(n, 0);
   const double margin = s_.lost_margin > 0 ? s_.lost_margin : cell;
   std::vector<std::uint8_t> gone(n, 0);
+  std::size_t n_gone = 0;
+#pragma omp parallel for schedule(static) reduction(+ : n_gone) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
     const bool lost = outside(dom, p_.x[k], margin);
-    if (!remove_flag_[k] && !lost) continue;
-    gone[k] = 1;
-    lost_ += lost && !remove_flag_[k];
+    gone[k] = remove_flag_[k] ? 1 : lost ? 2 : 0;
+    n_gone += gone[k] != 0;
+  }
+  for (std::size_t k = 0; k < n && n_gone > 0; ++k) {
+    if (!gone[k]) continue;
+    --n_gone;
+    lost_ += gone[k] == 2;
     mass_removed_ += p_.mass[k];
     removed_ += 0.5 * p_.mass[k] * p_.v[k].squaredNorm() +
                 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm() -
@@ -50,20 +59,27 @@ void DemSolver::rebuild() {
   }
   remove_flag_.clear();
 
+  // One cell sort, on the positions of now: it gives the spatial order, and renumbered it is the
+  // cell list of the sorted particles (particles keep their cells and, within a cell, their order).
   const CellGrid grid(dom, cell);
+  cells_.build(p_.x, grid);
+  const bool sort = s_.sort_every > 0 && (rebuilds_ - 1) % s_.sort_every == 0;
   std::vector<std::uint32_t> order;
-  if (s_.sort_every > 0 && (rebuilds_ - 1) % s_.sort_every == 0) {
-    order = spatial_order(p_.x, grid);
+  if (sort) {
+    order = cells_.items;
   } else {
     order.resize(n);
     std::iota(order.begin(), order.end(), 0u);
   }
+  const std::size_t before = order.size();
   order.erase(std::remove_if(order.begin(), order.end(), [&](std::uint32_t k) { return gone[k]; }),
               order.end());
   std::vector<std::uint32_t> inv(n, kGone);
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < order.size(); ++k) inv[order[k]] = static_cast<std::uint32_t>(k);
 
-  p_.permute(order);
+  if (sort || order.size() != before) p_.permute(order);  // else the order is the identity
+  cells_.renumber(inv);
   // The new list is built in the storage of the one before the last (build_pairs resets all of
   // it): its arrays are not reallocated, nor their pages touched for the first time, while the
   // pair count does not grow.
@@ -72,15 +88,18 @@ void DemSolver::rebuild() {
   WallContactList old_wc = std::move(wc_);
   wc_ = WallContactList{};
 
-  CellList cells;
-  cells.build(p_.x, grid);
-  build_pairs(p_.x, p_.radius, dom, cells, extra, pairs_);
+  build_pairs(p_.x, p_.radius, dom, cells_, extra, pairs_);
   std::vector<ContactTally> dropped;
   carry_over(old_pairs, inv, pairs_, dropped);
-  build_wall_list(cells, extra);
+  build_wall_list(cells_, extra);
 
-  // Wall contacts carry over by (particle, wall, triangle).
-  for (std::size_t e = 0; e < old_wc.size(); ++e) {
+  // Wall contacts carry over by (particle, wall, triangle): distinct old entries go to distinct
+  // new ones, so in parallel; those not carried are then booked in entry order.
+  const std::size_t nwc = old_wc.size();
+  std::vector<std::uint8_t> carried(nwc, 1);
+  std::size_t n_lost = 0;
+#pragma omp parallel for schedule(static) reduction(+ : n_lost) if (nwc >= kMinParallel)
+  for (std::size_t e = 0; e < nwc; ++e) {
     if (!old_wc.state[e]) continue;
     const std::uint32_t q = inv[old_wc.particle[e]];
     bool found = false;
@@ -92,8 +111,11 @@ void DemSolver::rebuild() {
           found = true;
           break;
         }
-    if (!found) dropped.push_back(old_wc.tally[e]);
+    carried[e] = found;
+    n_lost += !found;
   }
+  for (std::size_t e = 0; e < nwc && n_lost > 0; ++e)
+    if (!carried[e]) dropped.push_back(old_wc.tally[e]), --n_lost;
   for (const auto& t : dropped) {
     stats_.add_closed(t);
     stiffness_closed_ += t.e_stiffness;
@@ -114,14 +136,16 @@ void DemSolver::rebuild() {
 void DemSolver::build_wall_list(const CellList& cells, double extra) {
   const std::size_t n = p_.size();
   const CellGrid& g = cells.grid;
-  // Triangles of each mesh binned into the cells their inflated bounding box overlaps: a triangle
-  // within reach of a centre overlaps the centre's cell.
+  // Triangles of each mesh binned into the occupied cells their inflated bounding box overlaps (a
+  // triangle within reach of a centre overlaps the centre's cell): bins for the cells that hold
+  // particles only, so the binning costs the triangles' cell coverage, not the grid.
   const double inflate = max_radius_ + extra;
+  const std::size_t nocc = cells.cell.size();
   std::vector<std::vector<std::uint32_t>> bin_start(walls_.size()), bin_tris(walls_.size());
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const auto* m = std::get_if<MeshWall>(&walls_[w].shape);
     if (!m) continue;
-    std::vector<std::uint32_t> count(g.cells() + 1, 0);
+    std::vector<std::uint32_t> count(nocc + 1, 0);
     const auto for_cells = [&](std::size_t t, auto&& f) {
       const auto& tri = m->mesh.triangles[t];
       Vec3 lo = m->current[tri[0]], hi = lo;
@@ -130,15 +154,17 @@ void DemSolver::build_wall_list(const CellList& cells, double extra) {
       lo.array() -= inflate, hi.array() += inflate;
       for (int z = g.coord(lo[2], 2); z <= g.coord(hi[2], 2); ++z)
         for (int y = g.coord(lo[1], 1); y <= g.coord(hi[1], 1); ++y)
-          for (int x = g.coord(lo[0], 0); x <= g.coord(hi[0], 0); ++x) f(g.index(x, y, z));
+          for (int x = g.coord(lo[0], 0); x <= g.coord(hi[0], 0); ++x)
+            if (const std::uint32_t s = cells.find(g.index(x, y, z)); s != UINT32_MAX) f(s);
     };
     for (std::size_t t = 0; t < m->mesh.size(); ++t)
-      for_cells(t, [&](std::size_t c) { ++count[c + 1]; });
-    for (std::size_t c = 0; c < g.cells(); ++c) count[c + 1] += count[c];
+      for_cells(t, [&](std::uint32_t s) { ++count[s + 1]; });
+    prefix_sum(count);
     bin_tris[w].resize(count.back());
     std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
     for (std::size_t t = 0; t < m->mesh.size(); ++t)
-      for_cells(t, [&](std::size_t c) { bin_tris[w][fill[c]++] = static_cast<std::uint32_t>(t); });
+      for_cells(t,
+                [&](std::uint32_t s) { bin_tris[w][fill[s]++] = static_cast<std::uint32_t>(t); });
     bin_start[w] = std::move(count);
   }
 
@@ -147,7 +173,7 @@ void DemSolver::build_wall_list(const CellList& cells, double extra) {
     const double reach = p_.radius[k] + extra;
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       if (const auto* m = std::get_if<MeshWall>(&walls_[w].shape)) {
-        const std::size_t c = g.cell_of(x);
+        const std::uint32_t c = cells.find(g.cell_of(x));  // occupied: k is in it
         for (std::uint32_t b = bin_start[w][c]; b < bin_start[w][c + 1]; ++b) {
           const int t = static_cast<int>(bin_tris[w][b]);
           if (m->closest(t, x).dist2 < reach * reach) add(w, t);

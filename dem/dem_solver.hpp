@@ -133,6 +133,9 @@ class DemSolver {
   // particle at N = 100,352), against page faults on fresh arrays at every rebuild (default jet
   // mill: neighbour search 5.5 s instead of 7.3-7.7 s).
   PairList spare_pairs_;
+  // The cells of the last rebuild, kept for their buffers: the sparse set `slot` is the one array
+  // of the grid's size, allocated once (dem_rebuild.cpp; a rebuild costs O(particles)).
+  CellList cells_;
   WallContactList wc_;
   CollisionStats stats_;
   std::vector<Vec3> x_ref_;            // positions at the last rebuild

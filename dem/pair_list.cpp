@@ -6,12 +6,6 @@
 
 namespace lbdem::dem {
 
-namespace {
-// Below this many pairs (or particles) a pass runs on one thread: an OpenMP region costs more
-// than the work.
-constexpr std::size_t kMinParallel = 4096;
-}  // namespace
-
 void PairList::resize(std::size_t n) {
   i.resize(n), j.resize(n);
   history.resize(n);
@@ -31,30 +25,136 @@ void PairList::resize(std::size_t n) {
 }
 
 void PairList::build_transpose(std::size_t np) {
-  jfirst.assign(np + 1, 0);
-  for (auto pj : j) ++jfirst[pj + 1];
-  for (std::size_t p = 0; p < np; ++p) jfirst[p + 1] += jfirst[p];
-  jslot.resize(size());
-  std::vector<std::uint32_t> fill(jfirst.begin(), jfirst.end() - 1);
-  for (std::size_t k = 0; k < size(); ++k) jslot[k] = fill[j[k]]++;
-  j_force.resize(size());
-  j_torque.resize(size());
-#pragma omp parallel for schedule(static) if (size() >= kMinParallel)
-  for (std::size_t k = 0; k < size(); ++k) j_force[k] = j_torque[k] = Vec3::Zero();
+  const std::size_t n = size();
+  jfirst.resize(np + 1);
+  jslot.resize(n);
+  j_force.resize(n);
+  j_torque.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  for (std::size_t k = 0; k < n; ++k) j_force[k] = j_torque[k] = Vec3::Zero();
+  if (n < kMinParallel) {  // a serial counting sort
+    std::fill(jfirst.begin(), jfirst.end(), 0u);
+    for (auto pj : j) ++jfirst[pj + 1];
+    for (std::size_t p = 0; p < np; ++p) jfirst[p + 1] += jfirst[p];
+    j_scratch.assign(jfirst.begin(), jfirst.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) jslot[k] = j_scratch[j[k]]++;
+    return;
+  }
+  // A counting sort by j in two levels, each in parallel: the pairs are first distributed
+  // (stably, over fixed blocks of pairs) to ranges of 4,096 particles, then each range counts and
+  // places its own pairs with counters that stay in cache. Stable throughout: ascending pair index
+  // within each j, whatever the number of threads.
+  constexpr int kShift = 12;
+  const std::size_t nr = (np >> kShift) + 1;
+  const std::size_t block = block_size(n), nb = (n + block - 1) / block;
+  j_hist.resize(nb * nr + 1);
+  j_scratch.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::uint32_t* h = j_hist.data() + b * nr;
+    std::fill(h, h + nr, 0u);
+    for (std::size_t k = b * block; k < std::min(n, (b + 1) * block); ++k) ++h[j[k] >> kShift];
+  }
+  std::vector<std::uint32_t> range_start(nr + 1);
+  std::uint32_t running = 0;  // range-major, block-minor
+  for (std::size_t r = 0; r < nr; ++r) {
+    range_start[r] = running;
+    for (std::size_t b = 0; b < nb; ++b) {
+      const std::uint32_t c = j_hist[b * nr + r];
+      j_hist[b * nr + r] = running;
+      running += c;
+    }
+  }
+  range_start[nr] = running;
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::uint32_t* h = j_hist.data() + b * nr;
+    for (std::size_t k = b * block; k < std::min(n, (b + 1) * block); ++k)
+      j_scratch[h[j[k] >> kShift]++] = static_cast<std::uint32_t>(k);
+  }
+#pragma omp parallel
+  {
+    std::vector<std::uint32_t> count((std::size_t(1) << kShift) + 1);
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t r = 0; r < nr; ++r) {
+      const std::size_t p0 = r << kShift, p1 = std::min(np, (r + 1) << kShift);
+      const std::uint32_t s0 = range_start[r], s1 = range_start[r + 1];
+      std::fill(count.begin(), count.end(), 0u);
+      for (std::uint32_t s = s0; s < s1; ++s) ++count[j[j_scratch[s]] - p0 + 1];
+      for (std::size_t q = 0; q + p0 < p1; ++q) {
+        count[q + 1] += count[q];
+        jfirst[p0 + q] = s0 + count[q];
+      }
+      for (std::uint32_t s = s0; s < s1; ++s) {
+        const std::uint32_t k = j_scratch[s];
+        jslot[k] = s0 + count[j[k] - p0]++;
+      }
+    }
+  }
+  jfirst[np] = static_cast<std::uint32_t>(n);
 }
 
 void CellList::build(const std::vector<Vec3>& x, const CellGrid& g) {
   grid = g;
-  const std::size_t nc = g.cells();
-  start.assign(nc + 1, 0);
-  std::vector<std::uint32_t> cell(x.size());
-#pragma omp parallel for schedule(static) if (x.size() >= kMinParallel)
-  for (std::size_t p = 0; p < x.size(); ++p) cell[p] = static_cast<std::uint32_t>(g.cell_of(x[p]));
-  for (std::size_t p = 0; p < x.size(); ++p) ++start[cell[p] + 1];
-  for (std::size_t c = 0; c < nc; ++c) start[c + 1] += start[c];
-  items.resize(x.size());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t p = 0; p < x.size(); ++p) items[fill[cell[p]]++] = static_cast<std::uint32_t>(p);
+  if (slot.size() < g.cells()) slot.resize(g.cells());  // once per grid size: O(cells)
+  const std::size_t n = x.size();
+  sorter.sort(n, [&](std::size_t p) { return static_cast<std::uint32_t>(g.cell_of(x[p])); });
+  items.resize(n);
+  item_cell.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  for (std::size_t s = 0; s < n; ++s) items[s] = sorter.index(s), item_cell[s] = sorter.key(s);
+  index_cells();
+}
+
+void CellList::renumber(const std::vector<std::uint32_t>& inv) {
+  constexpr auto kGone = std::numeric_limits<std::uint32_t>::max();
+  const std::size_t n = items.size();
+  const auto kept = [&](std::size_t s0, std::size_t s1) {
+    return static_cast<std::size_t>(
+        std::count_if(items.begin() + std::ptrdiff_t(s0), items.begin() + std::ptrdiff_t(s1),
+                      [&](std::uint32_t p) { return inv[p] != kGone; }));
+  };
+  std::size_t removed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : removed) if (n >= kMinParallel)
+  for (std::size_t k = 0; k < n; ++k) removed += inv[k] == kGone;
+  if (removed == 0) {  // the same cells, particles renamed
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+    for (std::size_t s = 0; s < n; ++s) items[s] = inv[items[s]];
+    return;
+  }
+  std::vector<std::uint32_t> new_items(n), new_cell(n);
+  const std::size_t m = blocked_fill(n, kept, [&](std::size_t s0, std::size_t s1, std::size_t o) {
+    for (std::size_t s = s0; s < s1; ++s)
+      if (inv[items[s]] != kGone) new_items[o] = inv[items[s]], new_cell[o++] = item_cell[s];
+  });
+  new_items.resize(m), new_cell.resize(m);
+  items.swap(new_items);
+  item_cell.swap(new_cell);
+  index_cells();
+}
+
+void CellList::index_cells() {
+  const std::size_t n = item_cell.size();
+  const auto starts = [&](std::size_t s) { return s == 0 || item_cell[s] != item_cell[s - 1]; };
+  cell.resize(n);
+  begin.resize(n + 1);
+  const std::size_t nc = blocked_fill(
+      n,
+      [&](std::size_t s0, std::size_t s1) {
+        std::size_t c = 0;
+        for (std::size_t s = s0; s < s1; ++s) c += starts(s);
+        return c;
+      },
+      [&](std::size_t s0, std::size_t s1, std::size_t o) {
+        for (std::size_t s = s0; s < s1; ++s)
+          if (starts(s)) {
+            cell[o] = item_cell[s], begin[o] = static_cast<std::uint32_t>(s);
+            slot[item_cell[s]] = static_cast<std::uint32_t>(o++);
+          }
+      });
+  cell.resize(nc);
+  begin.resize(nc + 1);
+  begin[nc] = static_cast<std::uint32_t>(n);
 }
 
 std::vector<std::uint32_t> spatial_order(const std::vector<Vec3>& x, const CellGrid& g) {
@@ -110,13 +210,17 @@ struct NeighbourRanges {
           while (b < kx && nx[b] == nx[b - 1] + 1) ++b;
           const std::size_t first = g.index(nx[a], ny[yc], nz[zc]);
           const std::size_t last = g.index(nx[b - 1], ny[yc], nz[zc]);
-          const std::uint32_t r0 = cl.start[first], r1 = cl.start[last + 1];
           a = b;
-          if (r0 == r1) continue;
-          std::uint32_t top_index = 0;
-          for (std::size_t cc = first; cc <= last; ++cc)
-            if (cl.start[cc + 1] > cl.start[cc])
-              top_index = std::max(top_index, cl.items[cl.start[cc + 1] - 1]);
+          // The occupied cells of the run are consecutive in the list, their items one range.
+          std::uint32_t s0 = UINT32_MAX, s1 = 0, top_index = 0;
+          for (std::size_t cc = first; cc <= last; ++cc) {
+            const std::uint32_t s = cl.find(cc);
+            if (s == UINT32_MAX) continue;
+            s0 = std::min(s0, s), s1 = s + 1;
+            top_index = std::max(top_index, cl.items[cl.begin[s + 1] - 1]);
+          }
+          if (s0 == UINT32_MAX) continue;
+          const std::uint32_t r0 = cl.begin[s0], r1 = cl.begin[s1];
           k0[std::size_t(count)] = r0;
           k1[std::size_t(count)] = r1;
           top[std::size_t(count)] = top_index;
@@ -174,7 +278,7 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
       out.first[p + 1] = static_cast<std::uint32_t>(v.size() - before);
     }
   }
-  for (std::size_t p = 0; p < np; ++p) out.first[p + 1] += out.first[p];
+  prefix_sum(out.first);
   out.resize(out.first[np]);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t b = 0; b < nblocks; ++b) {
@@ -198,13 +302,15 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
   constexpr std::uint32_t kNone = kGone, kRemoved = kGone - 1, kBeyond = kGone - 2;
   const std::size_t n = old.size();
   std::vector<std::uint32_t> dest(n);
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  std::size_t n_dropped = 0;
+#pragma omp parallel for schedule(static) reduction(+ : n_dropped) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
     dest[k] = kNone;
     if (!old.state[k]) continue;
     const std::uint32_t a0 = inv[old.i[k]], b0 = inv[old.j[k]];
     if (a0 == kGone || b0 == kGone) {
       dest[k] = kRemoved;
+      ++n_dropped;
       continue;
     }
     const bool flip = b0 < a0;  // history is "i relative to j"
@@ -214,6 +320,7 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
     const auto pos = std::lower_bound(beg, end, b);
     if (pos == end || *pos != b) {
       dest[k] = kBeyond;
+      ++n_dropped;
       continue;
     }
     const auto f = static_cast<std::size_t>(pos - fresh.j.begin());
@@ -225,6 +332,7 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
     fresh.record[f] = old.record[k];
     fresh.state[f] = old.state[k];
   }
+  if (n_dropped == 0) return;  // the usual case: no serial pass over the pairs
   struct Beyond {
     std::uint32_t a, b, src;
   };

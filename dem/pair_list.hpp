@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/contact/geometry.hpp"
+#include "dem/csr_build.hpp"
 #include "dem/domain.hpp"
 
 namespace lbdem::dem {
@@ -57,22 +58,47 @@ struct PairList {
   std::vector<std::uint32_t> jfirst, jslot;
   std::vector<Vec3> j_force, j_torque;
 
+  std::vector<std::uint32_t> j_scratch, j_hist;  // build_transpose's, kept (not list state)
+
   std::size_t size() const { return i.size(); }
   /// n pairs with zeroed springs, tallies, records and states (i and j keep whatever they held: the
   /// caller writes them); the j side is sized by build_transpose. build_pairs resets every field,
   /// so a list may be rebuilt in the storage of an older one: a new field must be reset there too.
   void resize(std::size_t n);
   /// Builds jfirst/jslot from (i, j) for n_particles particles (stable: ascending pair index) and
-  /// zeroes the j-side loads.
+  /// zeroes the j-side loads: a counting sort of the pairs by j in two levels, in parallel.
   void build_transpose(std::size_t n_particles);
 };
 
-/// Particle indices sorted into cells (counting sort, stable in particle index).
+/// Particle indices sorted into cells (stable in particle index), with the occupied cells listed:
+/// building, renumbering and looking a cell up cost O(particles), not O(cells). The particles are
+/// sorted by cell with a radix sort (KeySort); `slot` maps a cell to its entry in `cell` as a
+/// sparse set (Briggs and Torczon 1993): an entry is trusted only if `cell` points back at the
+/// cell, so it is never cleared, and only occupied cells are written. Keep one CellList across
+/// rebuilds: `slot` is the one array of the grid's size, allocated (and zeroed) once per grid
+/// size.
 struct CellList {
   CellGrid grid;
-  std::vector<std::uint32_t> start;  // cells + 1
-  std::vector<std::uint32_t> items;
+  std::vector<std::uint32_t> items;      // particles by (cell, index)
+  std::vector<std::uint32_t> item_cell;  // the cell of items[s]
+  std::vector<std::uint32_t> cell;       // the occupied cells, ascending
+  std::vector<std::uint32_t> begin;      // occupied cell s holds items[begin[s] .. begin[s + 1])
+  std::vector<std::uint32_t> slot;       // grid cell -> its index in `cell`, if occupied
+  KeySort sorter;
+
   void build(const std::vector<Vec3>& x, const CellGrid& g);
+  /// The same list after the particles were reordered or removed: old particle k is now inv[k]
+  /// (UINT32_MAX if removed), and inv keeps the order of the particles of each cell (as a
+  /// spatial sort by this list and the removal of particles do). No second sort.
+  void renumber(const std::vector<std::uint32_t>& inv);
+  /// The occupied-cell entry of grid cell c, or UINT32_MAX if it holds no particle.
+  std::uint32_t find(std::size_t c) const {
+    const std::uint32_t s = slot[c];
+    return s < cell.size() && cell[s] == c ? s : UINT32_MAX;
+  }
+
+ private:
+  void index_cells();  // cell, begin and slot from item_cell
 };
 
 /// Order of particles by cell (stable): new[k] = old[order[k]]. Improves cache locality.

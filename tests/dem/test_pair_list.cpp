@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <utility>
 #include <vector>
@@ -91,4 +92,100 @@ TEST_CASE("Pair list: the cell search finds the brute-force pairs, and reused st
     CHECK(same_bytes(reused.j_force, fresh.j_force));
     CHECK(same_bytes(reused.j_torque, fresh.j_torque));
   }
+}
+
+TEST_CASE("Key sort: stable, as std::stable_sort, for any key range and size", "[dem]") {
+  std::mt19937_64 rng(11);
+  for (std::size_t n :
+       {std::size_t(0), std::size_t(1), std::size_t(7), std::size_t(5000), std::size_t(70000)})
+    for (std::uint32_t range : {1u, 3u, 300u, 1u << 21, 0xffffffffu}) {
+      std::uniform_int_distribution<std::uint32_t> u(0, range - 1);
+      std::vector<std::uint32_t> key(n);
+      for (auto& k : key) k = u(rng) + (range < 1000 ? 123456u : 0u);  // an offset: lo > 0
+      std::vector<std::uint32_t> want(n);
+      std::iota(want.begin(), want.end(), 0u);
+      std::stable_sort(want.begin(), want.end(),
+                       [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+      KeySort ks;
+      ks.sort(n, [&](std::size_t k) { return key[k]; });
+      bool same = ks.a.size() == n;
+      for (std::size_t s = 0; same && s < n; ++s)
+        same = ks.index(s) == want[s] && ks.key(s) == key[want[s]];
+      CHECK(same);
+    }
+}
+
+TEST_CASE("Cell list: occupied cells only, renumbered as if rebuilt, transpose as a serial fill",
+          "[dem]") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  // A 100 x 100 x 100 grid (1e6 cells) with few particles: a sparse domain.
+  Domain d;
+  d.hi = Vec3(1, 1, 1);
+  const CellGrid grid(d, 0.01);
+  REQUIRE(grid.cells() == 1000000);
+  CellList cl;
+  for (std::size_t n : {std::size_t(5000), std::size_t(40), std::size_t(6000)}) {
+    std::vector<Vec3> x(n);
+    // Half the particles in a small corner, so that cells hold several.
+    for (std::size_t k = 0; k < n; ++k)
+      x[k] = k % 2 ? Vec3(u(rng), u(rng), u(rng)) : Vec3(0.05 * u(rng), 0.05 * u(rng), u(rng));
+    cl.build(x, grid);  // reuses the slots of the build before: stale entries must not count
+    // Reference: a dense counting sort.
+    std::vector<std::uint32_t> start(grid.cells() + 1, 0), items(n);
+    for (const Vec3& p : x) ++start[grid.cell_of(p) + 1];
+    for (std::size_t c = 0; c < grid.cells(); ++c) start[c + 1] += start[c];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) items[fill[grid.cell_of(x[k])]++] = std::uint32_t(k);
+    CHECK(cl.items == items);
+    bool cells_ok = true;
+    std::size_t occupied = 0;
+    for (std::size_t c = 0; c < grid.cells(); ++c) {
+      const std::uint32_t s = cl.find(c);
+      if (start[c + 1] == start[c]) {
+        cells_ok = cells_ok && s == UINT32_MAX;
+        continue;
+      }
+      ++occupied;
+      cells_ok = cells_ok && s != UINT32_MAX && cl.begin[s] == start[c] &&
+                 cl.begin[s + 1] == start[c + 1] && cl.cell[s] == c;
+    }
+    CHECK(cells_ok);
+    CHECK(occupied == cl.cell.size());
+
+    // Sort by the list and drop every seventh particle: renumbered equals built afresh.
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t k : cl.items)
+      if (k % 7) order.push_back(k);
+    std::vector<std::uint32_t> inv(n, UINT32_MAX);
+    std::vector<Vec3> y(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      inv[order[k]] = std::uint32_t(k), y[k] = x[order[k]];
+    cl.renumber(inv);
+    CellList fresh;
+    fresh.build(y, grid);
+    CHECK(cl.items == fresh.items);
+    CHECK(cl.item_cell == fresh.item_cell);
+    CHECK(cl.cell == fresh.cell);
+    CHECK(cl.begin == fresh.begin);
+    bool found_ok = true;
+    for (std::uint32_t c : fresh.cell) found_ok = found_ok && cl.find(c) == fresh.find(c);
+    CHECK(found_ok);
+  }
+
+  // The transpose against the serial fill it replaced.
+  PairList pl;
+  const std::size_t np = 9000;
+  std::uniform_int_distribution<std::uint32_t> pick(0, np - 1);
+  for (std::uint32_t p = 0; p < np; ++p)
+    for (int m = 0; m < 4; ++m)
+      if (const std::uint32_t q = pick(rng); q > p) pl.i.push_back(p), pl.j.push_back(q);
+  pl.build_transpose(np + 5);  // particles without pairs at the end
+  std::vector<std::uint32_t> jfirst(np + 6, 0), jslot(pl.size());
+  for (auto q : pl.j) ++jfirst[q + 1];
+  for (std::size_t p = 0; p < np + 5; ++p) jfirst[p + 1] += jfirst[p];
+  std::vector<std::uint32_t> fill(jfirst.begin(), jfirst.end() - 1);
+  for (std::size_t k = 0; k < pl.size(); ++k) jslot[k] = fill[pl.j[k]]++;
+  CHECK(pl.jfirst == jfirst);
+  CHECK(pl.jslot == jslot);
 }
