@@ -1,4 +1,6 @@
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <span>
 #include <vector>
 
