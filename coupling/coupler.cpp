@@ -157,8 +157,9 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   gas_.set_porosity_field(eps_, alpha_);
   gas_.set_force_field(force_lat_);
   if (s_.displaced_gas) {
-    // The solids volume flux j [m/s] and the gas each cell loses per step to the particles that
-    // crowd into it, -dt div j (lattice density 1 per unit cell volume).
+    // The solids volume flux j [m/s] and each cell's mass source per step, -dt div j (lattice
+    // density 1 per unit cell volume): positive where particles crowd in, so that the raised
+    // pressure pushes the gas out, negative where they leave.
 #pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
     for (std::size_t k = 0; k < np; ++k)
       work_[k] = (4.0 / 3.0 * kPi * p.radius[k] * p.radius[k] * p.radius[k]) * v_p_[k];
