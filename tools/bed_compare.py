@@ -105,6 +105,21 @@ def goal_row(quantity, unit, measured, lbdem, difference, goal, within):
     return [quantity, unit, f"{measured:.4g}", f"{lbdem:.4g}", f"{difference:.4g}", goal, flag]
 
 
+def report(rows, csv_path=None):
+    """Prints the goals table and, with csv_path, writes it (write_goals)."""
+    print(GOAL_HEADER)
+    for r in rows:
+        print(",".join(r))
+    if csv_path:
+        write_goals(csv_path, rows)
+
+
+def save_figure(fig, path):
+    """Saves a matplotlib figure atomically (temp + rename)."""
+    fig.savefig(path + ".tmp.png", dpi=110)
+    os.replace(path + ".tmp.png", path)
+
+
 def write_goals(path, rows):
     """Writes the goals table atomically (temp + rename)."""
     with open(path + ".tmp", "w") as f:

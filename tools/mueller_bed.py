@@ -109,11 +109,7 @@ def main():
                             float("nan"), f"reported (resolution {f_res:.2g} Hz)", None))
     print(f"# {a.run}: {used} snapshots from t = {a.t_from} s; window "
           f"{s['time_s'][-1] - s['time_s'][0]:.3g} s")
-    print(bc.GOAL_HEADER)
-    for r in rows:
-        print(",".join(r))
-    if a.csv:
-        bc.write_goals(a.csv, rows)
+    bc.report(rows, a.csv)
     if a.png:
         import matplotlib
         matplotlib.use("Agg")
@@ -128,8 +124,7 @@ def main():
             ax[k].set_title(f"{q}, {1e3 * h:.1f} mm")
         ax[0].legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(a.png + ".tmp.png", dpi=110)
-        os.replace(a.png + ".tmp.png", a.png)
+        bc.save_figure(fig, a.png)
 
 
 if __name__ == "__main__":

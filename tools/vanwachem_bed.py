@@ -81,11 +81,7 @@ def main():
     ]
     print(f"# {a.run}: {t[-1] - t[0]:.3g} s from t = {a.t_from} s, {len(te)} snapshots; "
           f"mean pressure at 45 mm {p.mean():.4g} Pa")
-    print(bc.GOAL_HEADER)
-    for r in rows:
-        print(",".join(r))
-    if a.csv:
-        bc.write_goals(a.csv, rows)
+    bc.report(rows, a.csv)
     if a.png:
         import matplotlib
         matplotlib.use("Agg")
@@ -118,8 +114,7 @@ def main():
         ax[3].set_xlabel("t - t0 [s]")
         ax[3].set_ylabel("voidage at 45 mm")
         fig.tight_layout()
-        fig.savefig(a.png + ".tmp.png", dpi=110)
-        os.replace(a.png + ".tmp.png", a.png)
+        bc.save_figure(fig, a.png)
 
 
 if __name__ == "__main__":

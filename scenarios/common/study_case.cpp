@@ -244,6 +244,12 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
   return out + "," + bound + "," + (std::isnan(from) ? std::string() : num(from));
 }
 
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 int run_study_case(const std::string& root, const StudyCase& c, const StudyOptions& opt,
                    const std::string& banner) {
   const std::string dir = root + "/" + c.name;

@@ -18,6 +18,9 @@ struct StudyCase {
   std::vector<std::string> sets;       // --set overrides of the case
 };
 
+/// A shell word for a study's std::system calls: single quotes, each ' inside written as '\''.
+std::string shell_quoted(const std::string& s);
+
 /// Runs or resumes one case (nothing if it is finished and long enough). Returns the run's exit
 /// code (0 if nothing was to do).
 int run_study_case(const std::string& root, const StudyCase& c, const StudyOptions& opt,

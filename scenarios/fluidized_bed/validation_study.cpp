@@ -56,12 +56,6 @@ const std::vector<ValidationCase>& cases() {
   return c;
 }
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
-
 // The rows of a goals table after its header.
 std::vector<std::string> goal_rows(const std::string& path) {
   std::vector<std::string> rows;
@@ -108,10 +102,11 @@ int run_validation_study(const StudyOptions& opt) {
   for (const auto& c : cases()) {
     const std::string dir = root + "/" + c.name;
     if (last_time(dir + "/timeseries.csv") <= c.from) continue;
-    std::string cmd = quoted(python) + " " + quoted(src + "/tools/" + c.tool) + " " + quoted(dir) +
-                      " --from " + std::to_string(c.from) + " --csv " + quoted(dir + "/goals.csv");
-    if (!opt.no_plots) cmd += " --png " + quoted(dir + "/comparison.png");
-    cmd += " > " + quoted(dir + "/comparison.txt");
+    std::string cmd = shell_quoted(python) + " " + shell_quoted(src + "/tools/" + c.tool) + " " +
+                      shell_quoted(dir) + " --from " + std::to_string(c.from) + " --csv " +
+                      shell_quoted(dir + "/goals.csv");
+    if (!opt.no_plots) cmd += " --png " + shell_quoted(dir + "/comparison.png");
+    cmd += " > " + shell_quoted(dir + "/comparison.txt");
     if (std::system(cmd.c_str()) != 0) {
       std::cerr << "warning: the comparison of " << c.name << " failed (" << cmd << ")\n";
       continue;

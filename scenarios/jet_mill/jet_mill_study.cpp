@@ -77,13 +77,6 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
-// A shell word: single quotes, each ' inside written as '\''.
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 // Rows of a CSV with a header, each a map from column name to its text.
 std::vector<std::map<std::string, std::string>> read_rows(const std::string& path) {
   std::vector<std::map<std::string, std::string>> rows;
@@ -264,9 +257,9 @@ int run_jet_mill_study(const StudyOptions& opt) {
     for (const char* m :
          {"speed_map", "wall_profile", "positions", "gas_profile", "gas_midplane", "summary"})
       fs::remove(dir + "/mill_" + m + ".csv");
-    std::string cmd = quoted((bin / "lbdem-jet-mill-maps").string()) + " " + quoted(dir) +
-                      " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g") + " --out " +
-                      quoted(dir + "/mill");
+    std::string cmd = shell_quoted((bin / "lbdem-jet-mill-maps").string()) + " " +
+                      shell_quoted(dir) + " --from " + fmt(from, "%.17g") + " --to " +
+                      fmt(to, "%.17g") + " --out " + shell_quoted(dir + "/mill");
     for (const Nozzle& q : g.nozzles)
       if (!q.feed)
         cmd += " --jet " + fmt(q.exit.x(), "%.9g") + "," + fmt(q.exit.y(), "%.9g") + "," +
@@ -274,27 +267,29 @@ int run_jet_mill_study(const StudyOptions& opt) {
     system_ok(cmd, "lbdem-jet-mill-maps");
   }
   std::string runs;
-  for (const Case* c : present) runs += " " + quoted(root + "/" + c->name) + " --label " + c->name;
+  for (const Case* c : present)
+    runs += " " + shell_quoted(root + "/" + c->name) + " --label " + c->name;
   const std::string window = " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g");
-  system_ok(quoted((bin / "lbdem-collision-stats").string()) + runs + window + " --csv " +
-                quoted(root + "/collisions.csv") + " > " + quoted(root + "/collisions_table.txt"),
+  system_ok(shell_quoted((bin / "lbdem-collision-stats").string()) + runs + window + " --csv " +
+                shell_quoted(root + "/collisions.csv") + " > " +
+                shell_quoted(root + "/collisions_table.txt"),
             "lbdem-collision-stats");
-  system_ok(quoted((bin / "lbdem-compare-runs").string()) + " --column kinetic_energy_J" + runs +
-                window + " --out " + quoted(root + "/kinetic_energy") + " > " +
-                quoted(root + "/kinetic_energy_table.txt"),
+  system_ok(shell_quoted((bin / "lbdem-compare-runs").string()) + " --column kinetic_energy_J" +
+                runs + window + " --out " + shell_quoted(root + "/kinetic_energy") + " > " +
+                shell_quoted(root + "/kinetic_energy_table.txt"),
             "lbdem-compare-runs");
   const std::string python = LBDEM_PYTHON;
   if (!opt.no_plots && !python.empty()) {
-    std::string plot = quoted(python) + " " + quoted(src + "/tools/jet_mill_figures.py") + " " +
-                       quoted(root) + " --from " + fmt(from, "%.17g") + " --to " +
-                       fmt(end, "%.17g") + " --offset " + fmt(spin_up, "%.17g") + " --radius " +
-                       fmt(chamber_radius, "%.17g");
+    std::string plot =
+        shell_quoted(python) + " " + shell_quoted(src + "/tools/jet_mill_figures.py") + " " +
+        shell_quoted(root) + " --from " + fmt(from, "%.17g") + " --to " + fmt(end, "%.17g") +
+        " --offset " + fmt(spin_up, "%.17g") + " --radius " + fmt(chamber_radius, "%.17g");
     for (const std::string& name : no_maps) plot += " --no-maps " + name;
     for (const Case* c : present) plot += " " + c->name;
     if (system_ok(plot + " > /dev/null", "tools/jet_mill_figures.py") == 0)
       std::cout << "figures: " << fs::absolute(root).string() << "/*.png\n";
-    if (system_ok(quoted(python) + " " + quoted(src + "/tools/collision_stats.py") + " " +
-                      quoted(root + "/collisions.csv") + " > /dev/null",
+    if (system_ok(shell_quoted(python) + " " + shell_quoted(src + "/tools/collision_stats.py") +
+                      " " + shell_quoted(root + "/collisions.csv") + " > /dev/null",
                   "tools/collision_stats.py") == 0)
       std::cout << "plot: " << fs::absolute(root + "/collisions.png").string() << "\n";
   }
