@@ -67,8 +67,10 @@ LbmSolver::LbmSolver(const LbmSettings& s)
       b.slip_sign = f % 2 ? -1 : 1;
     } else if (face.kind == FaceKind::inlet)
       body = add_inlet(std::move(name), uniform_velocity(face.wall_velocity));
-    else if (face.kind == FaceKind::outlet)
+    else if (face.kind == FaceKind::outlet) {
       body = add_outlet(std::move(name), face.density);
+      bodies_[std::size_t(body - 1)].outlet_backflow = face.backflow;
+    }
     face_body_[std::size_t(f)] = body;
     (face.kind == FaceKind::wall ? walls : open)[std::size_t(f)] = CellFlag(body);
   }

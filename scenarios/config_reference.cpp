@@ -389,13 +389,17 @@ const std::vector<KeyDoc>& key_docs() {
        "periodic where the box face is, else wall"},
       {"fluid.faces.*.kind", "",
        "kind of a gas face given as a table {kind = ..., ...} instead of a name: wall takes "
-       "slip_length, moving_wall velocity, inlet velocity and the ramp, outlet pressure"},
+       "slip_length, moving_wall velocity, inlet velocity and the ramp, outlet pressure and "
+       "backflow"},
       {"fluid.faces.*.slip_length", "m",
        "wall: Navier slip length b, the wall's tangential gas velocity is b du/dn (exact for TRT "
        "at magic 3/16); 0 no slip; for free slip make the face \"free_slip\""},
       {"fluid.faces.*.velocity", "m/s",
        "moving_wall: the wall's velocity, in its plane; inlet: the inflow velocity, into the box"},
       {"fluid.faces.*.pressure", "Pa", "outlet: gauge pressure"},
+      {"fluid.faces.*.backflow", "",
+       "outlet: gas may also enter through it; false bounces back the links of a cell with "
+       "inflow, for an outlet that vortices cross (a bed's erupting bubbles, a swirl)"},
       {"fluid.faces.*.ramp_start", "s", "inlet: time the ramp from ramp_from to velocity starts"},
       {"fluid.faces.*.ramp_time", "s", "inlet: duration of the linear ramp"},
       {"fluid.faces.*.ramp_from", "m/s",

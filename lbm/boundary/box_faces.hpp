@@ -24,6 +24,9 @@ struct FaceBoundary {
   // populations (slip_wall.hpp): 0 no slip (half-way bounce-back, unchanged), 1 free slip. The
   // solver refuses s > 0 on a moving wall, an inlet, an outlet or a periodic face.
   double slip = 0.0;
+  // outlet: whether gas may enter through it; false bounces back the links of a cell with inflow
+  // for that step (open_boundary.hpp: a vortex crossing the outlet then cannot feed itself).
+  bool backflow = true;
 };
 
 /// Faces in the order x_lo, x_hi, y_lo, y_hi, z_lo, z_hi (face = 2 axis + side).

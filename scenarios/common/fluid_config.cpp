@@ -87,6 +87,9 @@ FluidFace read_face(const Config& faces, int f, bool periodic_default) {
                        "set ramp_time (and ramp_start) in s, or drop ramp_from");
   } else if (out.kind == "outlet") {
     out.pressure = table.get("pressure", 0.0);
+    // false: links of a cell with inflow bounce back (open_boundary.hpp), for an outlet that
+    // vortices cross (bubbles erupting below it, a swirl).
+    out.backflow = table.get_bool("backflow", true);
   }
   return out;
 }
@@ -414,6 +417,7 @@ lbm::LbmSettings FluidConfig::lattice() const {
       // p - p_ref = (rho - 1) c_s^2 in lattice units.
       out.kind = lbm::FaceKind::outlet;
       out.density = 1.0 + u.density_change(in.pressure);
+      out.backflow = in.backflow;
     } else {
       out.kind = lbm::FaceKind::wall;
       out.wall_velocity = to_lattice(in.velocity);

@@ -44,6 +44,7 @@ struct FluidFace {
   std::string kind = "wall";             // wall | periodic | moving_wall | inlet | outlet
   Vec3 velocity = Vec3::Zero();          // moving_wall, inlet [m/s]
   double pressure = 0;                   // outlet, gauge pressure p - p_ref [Pa]
+  bool backflow = true;                  // outlet: gas may enter through it
   double ramp_start = 0, ramp_time = 0;  // inlet: leaves ramp_from at ramp_start, full after
                                          // ramp_time [s]
   Vec3 ramp_from = Vec3::Zero();         // inlet: the inflow before ramp_start [m/s]

@@ -63,7 +63,7 @@ TEST_CASE("docs/config.md is the generated reference and documents every key rea
   // Every face takes every key of each kind in every scenario that reads it.
   for (const char* face : {"x_lo", "x_hi", "y_lo", "y_hi", "z_lo", "z_hi"})
     for (const char* key : {"", ".kind", ".slip_length", ".velocity", ".ramp_start", ".ramp_time",
-                            ".ramp_from", ".pressure"}) {
+                            ".ramp_from", ".pressure", ".backflow"}) {
       const std::string path = std::string("fluid.faces.") + face + key;
       CAPTURE(path);
       REQUIRE(keys.count(path) == 1);

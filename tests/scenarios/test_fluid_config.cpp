@@ -211,3 +211,26 @@ TEST_CASE("Slip walls from the config: free_slip, a slip length, and what they r
   CHECK_THROWS_WITH(read_gas(r),
                     Catch::Contains("fluid.faces.z_lo.ramp_from") && Catch::Contains("max_speed"));
 }
+
+TEST_CASE("Outlet backflow from the config: open by default, shut on request",
+          "[scenarios][input]") {
+  // The key reaches the lattice's face (the solver's use of it:
+  // tests/lbm/test_open_boundaries.cpp).
+  const FluidConfig open = read("{ kind = \"inlet\", velocity = [0.0, 0.0, 0.01] }");
+  CHECK(open.faces[5].backflow);
+  CHECK(open.lattice().faces[5].backflow);
+  const Config c = Config::from_string(
+      "[fluid]\ndensity = 1.2\nviscosity = 1.8e-5\ndx = 1e-3\nmax_speed = 2.0\n"
+      "[fluid.faces]\nx_lo = \"periodic\"\nx_hi = \"periodic\"\ny_lo = \"periodic\"\n"
+      "y_hi = \"periodic\"\nz_lo = { kind = \"inlet\", velocity = [0.0, 0.0, 0.01] }\n"
+      "z_hi = { kind = \"outlet\", pressure = 0.0, backflow = false }\n");
+  const FluidConfig shut = read_fluid(c.section("fluid"), Vec3::Zero(), Vec3(4e-3, 4e-3, 2e-2),
+                                      {true, true, false}, Vec3(0, 0, -9.81));
+  CHECK_FALSE(shut.faces[5].backflow);
+  CHECK_FALSE(shut.lattice().faces[5].backflow);
+  Config bad = c.detached();
+  bad.set_override("fluid.faces.z_hi={kind=\"outlet\", pressure=0.0, backflow=0.5}");
+  CHECK_THROWS_WITH(read_fluid(bad.section("fluid"), Vec3::Zero(), Vec3(4e-3, 4e-3, 2e-2),
+                               {true, true, false}, Vec3(0, 0, -9.81)),
+                    Catch::Contains("fluid.faces.z_hi.backflow"));
+}
