@@ -28,12 +28,12 @@ def read_csv_data(name):
     return {h: cols[:, k] for k, h in enumerate(head)}
 
 
-def read_series(run, columns, t_from):
-    """time_s and the named columns of RUN/timeseries.csv from t_from on."""
+def read_series(run, columns, t_from, t_to=math.inf):
+    """time_s and the named columns of RUN/timeseries.csv from t_from to t_to."""
     with open(os.path.join(run, "timeseries.csv")) as f:
         rows = list(csv.DictReader(f))
     t = np.array([float(r["time_s"]) for r in rows])
-    keep = t >= t_from
+    keep = (t >= t_from) & (t <= t_to)
     out = {"time_s": t[keep]}
     for c in columns:
         out[c] = np.array([float(r[c]) for r in rows])[keep]
@@ -85,15 +85,15 @@ def slab_volume(z, r, lo, hi):
     return cap_volume(r, hi - (z - r)) - cap_volume(r, lo - (z - r))
 
 
-def snapshots(run, t_from):
+def snapshots(run, t_from, t_to=math.inf):
     """(time, position, velocity, radius) of each particle snapshot of RUN/particles.h5 from
-    t_from on, in SI units."""
+    t_from to t_to, in SI units."""
     import h5py
     with h5py.File(os.path.join(run, "particles.h5"), "r") as f:
         snaps = f["snapshots"]
         for key in sorted(snaps.keys()):
             t = float(f["time_s"][int(key)])
-            if t < t_from:
+            if t < t_from or t > t_to:
                 continue
             s = snaps[key]
             yield t, s["position_m"][()], s["velocity_m_per_s"][()], s["radius_m"][()]

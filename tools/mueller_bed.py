@@ -18,9 +18,10 @@ expansion within 10 %, judged on the mean solid fraction at each voidage height 
 height of a bed of given mass is inversely proportional to its mean solid fraction).
 Writes the goals table (--csv, see bed_compare.py) and a figure (--png).
 
-usage: mueller_bed.py RUN_DIR [--from 0.5] [--png out.png] [--csv goals.csv]
+usage: mueller_bed.py RUN_DIR [--from 0.5] [--to END] [--png out.png] [--csv goals.csv]
 """
 import argparse
+import math
 import os
 import sys
 
@@ -43,14 +44,14 @@ def profile_data(name):
     return x, list(d.values())[-1]
 
 
-def profiles(run, t_from):
+def profiles(run, t_from, t_to):
     edges = np.arange(0.0, WIDTH + 1e-12, BIN)
     centres = 0.5 * (edges[1:] + edges[:-1])
     nb = len(centres)
     vz = {h: [np.zeros(nb), np.zeros(nb)] for h in VZ_HEIGHTS}
     eps = {h: np.zeros(nb) for h in EPS_HEIGHTS}
     used = 0
-    for _, x, v, r in bc.snapshots(run, t_from):
+    for _, x, v, r in bc.snapshots(run, t_from, t_to):
         b = np.clip((x[:, 0] / BIN).astype(int), 0, nb - 1)
         for h, (sv, sn) in vz.items():
             m = np.abs(x[:, 2] - h) < BAND
@@ -70,11 +71,13 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run")
     ap.add_argument("--from", dest="t_from", type=float, default=0.5)
+    ap.add_argument("--to", dest="t_to", type=float, default=math.inf,
+                    help="end of the window [s] (default: the run's end)")
     ap.add_argument("--png")
     ap.add_argument("--csv")
     a = ap.parse_args()
-    x, v, e, used = profiles(a.run, a.t_from)
-    s = bc.read_series(a.run, ["pressure_drop_Pa", "bed_height_m"], a.t_from)
+    x, v, e, used = profiles(a.run, a.t_from, a.t_to)
+    s = bc.read_series(a.run, ["pressure_drop_Pa", "bed_height_m"], a.t_from, a.t_to)
     f_dp, f_res = bc.dominant_frequency(s["time_s"], s["pressure_drop_Pa"])
     comparisons = [("v_z", h, f"mueller_U0.9_vz_h{1e3 * h:.0f}mm.csv", v[h], "m/s")
                    for h in VZ_HEIGHTS]

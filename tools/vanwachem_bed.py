@@ -13,9 +13,10 @@ From the run folder, over t >= --from:
 Goals (from the validation issue): bed height within 10 %, frequency within 20 %; the rest is
 reported. Writes the goals table (--csv, bed_compare.py) and a figure (--png).
 
-usage: vanwachem_bed.py RUN_DIR [--from 1.5] [--png out.png] [--csv goals.csv]
+usage: vanwachem_bed.py RUN_DIR [--from 1.5] [--to END] [--png out.png] [--csv goals.csv]
 """
 import argparse
+import math
 import os
 import sys
 
@@ -29,9 +30,9 @@ PROBE_Z, BAND = 0.045, 0.0015  # [m] the probe height and the slab's half-thickn
 PROBE_X = (0.04, 0.05)  # [m] the middle 10 mm of the width
 
 
-def voidage_at_probe(run, t_from):
+def voidage_at_probe(run, t_from, t_to):
     times, eps = [], []
-    for t, x, _, r in bc.snapshots(run, t_from):
+    for t, x, _, r in bc.snapshots(run, t_from, t_to):
         m = (x[:, 0] >= PROBE_X[0]) & (x[:, 0] < PROBE_X[1])
         vol = bc.slab_volume(x[m, 2], r[m], PROBE_Z - BAND, PROBE_Z + BAND).sum()
         times.append(t)
@@ -43,17 +44,19 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run")
     ap.add_argument("--from", dest="t_from", type=float, default=1.5)
+    ap.add_argument("--to", dest="t_to", type=float, default=math.inf,
+                    help="end of the window [s] (default: the run's end)")
     ap.add_argument("--png")
     ap.add_argument("--csv")
     a = ap.parse_args()
 
-    s = bc.read_series(a.run, ["pressure_drop_Pa", "bed_height_m"], a.t_from)
+    s = bc.read_series(a.run, ["pressure_drop_Pa", "bed_height_m"], a.t_from, a.t_to)
     if len(s["time_s"]) < 64:
         sys.exit(f"vanwachem_bed.py: {len(s['time_s'])} rows of {a.run}/timeseries.csv from "
                  f"t = {a.t_from} s; at least 64 needed (let the run go on, or lower --from)")
     t, p, h = s["time_s"], s["pressure_drop_Pa"], s["bed_height_m"]
     f_lbdem, f_res = bc.dominant_frequency(t, p)
-    te, eps = voidage_at_probe(a.run, a.t_from)
+    te, eps = voidage_at_probe(a.run, a.t_from, a.t_to)
 
     mh = bc.read_csv_data("vanwachem2001_bed_height.csv")
     mp = bc.read_csv_data("vanwachem2001_relative_pressure.csv")
