@@ -3,6 +3,7 @@
 #include "core/phase_timer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -79,7 +80,9 @@ void DemSolver::step() {
   v_pred_.resize(n);
   w_pred_.resize(n);
   double max_d2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_d2)
+  std::size_t first_bad = n;  // the watchdog: lowest index of an unsound particle
+  const double limit2 = speed_limit2_;
+#pragma omp parallel for schedule(static) reduction(max : max_d2) reduction(min : first_bad)
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3 dv = (h / p_.mass[k]) * p_.force[k], dw = (h / p_.inertia[k]) * p_.torque[k];
     p_.v[k] += dv;
@@ -88,9 +91,25 @@ void DemSolver::step() {
     v_pred_[k] = p_.v[k] + dv;
     w_pred_[k] = p_.omega[k] + dw;
     if (k < x_ref_.size()) max_d2 = std::max(max_d2, (p_.x[k] - x_ref_[k]).squaredNorm());
+    // Read-only, so the step's results do not change; a NaN fails both comparisons.
+    if (!(p_.v[k].squaredNorm() <= limit2) ||
+        !std::isfinite(p_.x[k].sum() + p_.omega[k].sum() + p_.force[k].sum() + p_.torque[k].sum()))
+      first_bad = std::min(first_bad, k);
   }
   t_ = static_cast<double>(step_ + 1) * dt;  // from the step count: no drift over 1e8 steps
   ++step_;
+  if (first_bad < n) {
+    // Serial, once: the state is not stepped further (a NaN position would reach the cell list).
+    const std::size_t k = first_bad;
+    DemAlarm a;
+    a.step = step_, a.time = t_, a.id = p_.id[k];
+    a.x = p_.x[k], a.v = p_.v[k], a.omega = p_.omega[k];
+    a.force = p_.force[k], a.torque = p_.torque[k];
+    a.finite = a.x.allFinite() && a.v.allFinite() && a.omega.allFinite() && a.force.allFinite() &&
+               a.torque.allFinite();
+    if (!alarm_) alarm_ = a;
+    return;
+  }
   update_walls();
   lap.to(Phase::dem_integration);
   const double max_d = std::sqrt(max_d2);

@@ -16,6 +16,8 @@
 //  5. serial event scan (contact starts and ends) and fixed-block sums of wall loads.
 // The result is bitwise independent of the number of OpenMP threads.
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +70,16 @@ struct EnergyTotals {
   }
 };
 
+/// The first particle found unsound during a step (DemSolver::alarm): its state after that step's
+/// half kick and drift, when the check runs.
+struct DemAlarm {
+  std::int64_t step = 0;  // the step that found it
+  double time = 0;        // [s] at the end of that step
+  std::int64_t id = 0;    // ParticleArrays::id
+  Vec3 x, v, omega, force, torque;
+  bool finite = true;  // false: a non-finite component; true: faster than the speed limit
+};
+
 class DemSolver {
  public:
   DemSolver(const DemSettings& s, std::vector<Material> materials);
@@ -86,7 +98,15 @@ class DemSolver {
   std::vector<Wall>& walls() { return walls_; }
   const std::vector<Wall>& walls() const { return walls_; }
 
+  /// One step. The watchdog folded into its first pass (half kick and drift) checks every particle:
+  /// a non-finite position, velocity, angular velocity, force or torque, or a speed above
+  /// set_speed_limit() raises alarm() for the first such particle (lowest index: the same for any
+  /// thread count) and ends the step there, before the neighbour search meets the bad state.
   void step();
+  /// The speed above which a particle raises the alarm [m/s]; infinite (only non-finite states)
+  /// unless set.
+  void set_speed_limit(double v_max) { speed_limit2_ = v_max * v_max; }
+  const std::optional<DemAlarm>& alarm() const { return alarm_; }
   /// Books the work of ParticleArrays::external in energy() from now on (the coupling calls it;
   /// it costs one sum over the particles per step).
   void track_external_work() { track_external_ = true; }
@@ -154,6 +174,8 @@ class DemSolver {
   double stiffness_closed_ = 0, wall_work_ = 0, wall_power_prev_ = 0, inserted_ = 0, removed_ = 0;
   double mass_removed_ = 0;
   bool track_external_ = false;
+  double speed_limit2_ = std::numeric_limits<double>::infinity();
+  std::optional<DemAlarm> alarm_;
   double external_work_ = 0, external_power_prev_ = 0;
 };
 

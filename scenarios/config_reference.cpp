@@ -299,6 +299,12 @@ const std::vector<KeyDoc>& key_docs() {
       {"dem.steps_per_contact", "", "time steps per contact time when dt is not given"},
       {"dem.impact_speed", "m/s", "impact speed at which the Hertz contact time is evaluated"},
       {"dem.force_dt", "", "accept a dt above t_c/20 (with a warning)"},
+      {"dem.max_speed_factor", "",
+       "the DEM watchdog stops a run when a particle is this many times faster than the largest "
+       "expected speed (the banner prints the limit)"},
+      {"dem.max_energy_error", "",
+       "the DEM watchdog stops a run when the energy-balance error exceeds this fraction of the "
+       "energy moved (kinetic, elastic, dissipated and sources)"},
       {"dem.skin", "m", "neighbour-list skin", "0.2 x the smallest radius"},
       {"dem.sort_every", "",
        "neighbour-list rebuilds between spatial sorts of the particles (0: never)"},

@@ -254,6 +254,12 @@ int run_scenario(const RunOptions& opt) {
     log_phase_times(log, RunClock::now() - t0);
     log_suspension(log, suspended0);
     return 130;
+  } catch (const Diverged&) {
+    // The same input diverges again from the kept checkpoint (a resume keeps the physics).
+    write_file_atomic(dir + "/status",
+                      "failed (diverged; the last checkpoint is from before; log.txt names the "
+                      "fix, for a new run)\n");
+    throw;
   } catch (...) {
     write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
     throw;

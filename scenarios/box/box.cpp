@@ -259,10 +259,11 @@ void BoxScenario::banner(Log& log) const {
     log.line("DEM: no particles (a pure gas run); the DEM keeps the clock at the gas step");
   } else {
     for (const auto& line : cg_.banner) log.line(line);
+    const DemWatch w = watch();
     dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
                step_.scales.rayleigh_time, step_.scales.where,
                inflow_.on ? inflow_.radius.smallest() : 0.0,
-               inflow_.on ? inflow_.radius.largest() : 0.0);
+               inflow_.on ? inflow_.radius.largest() : 0.0, &w);
     if (inflow_.on)
       log.derived(
           "feed (inflow) mass rate", inflow_.mass_rate, "kg/s",
@@ -279,6 +280,17 @@ void BoxScenario::banner(Log& log) const {
     coupling_banner(log, coupling_, fluid_, sub_, solver_->particles().size(), cells);
   }
   if (extra_.banner) extra_.banner(log);
+}
+
+DemWatch BoxScenario::watch() const {
+  if (gas_only_) return {};
+  std::vector<ExpectedSpeed> others;
+  if (inflow_.on) others.push_back({inflow_.velocity.norm(), "inflow.velocity"});
+  // Particles the gas carries move at most as fast as the gas, which its own watchdog bounds.
+  if (gas_)
+    others.push_back(
+        {fluid_.units().velocity_to_si(kHealthySpeed), "the gas watchdog's speed limit", true});
+  return dem_watch(step_, *solver_, others);
 }
 
 void BoxScenario::advance_gas(dem::DemSolver& s) {
@@ -474,6 +486,7 @@ int BoxScenario::run(const RunContext& ctx) {
     };
     hooks.cycle = cycle();
   }
+  hooks.watch = watch();
   DemDriver driver(*solver_, out_, hooks);
   return driver.run(ctx);
 }

@@ -75,6 +75,9 @@ class BoxScenario : public Scenario {
   /// hand).
   void before_step(dem::DemSolver& s);
   const OutputSettings& output() const override { return out_; }
+  /// The DEM watchdog's limits (dem_driver.hpp): off for a pure gas run; the walls a scenario
+  /// built on the box added count.
+  DemWatch watch() const;
 
  private:
   struct Inflow {

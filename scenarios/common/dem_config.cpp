@@ -115,6 +115,14 @@ StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
   // resumes with the same step instead of scaling it a second time.
   c.dt = d.get("dt", tc / per / dt_factor, Range::positive("give the time step in s")) * dt_factor;
   const bool force = d.get_bool("force_dt", false);
+  c.dt_factor = dt_factor, c.forced = force;
+  c.max_speed_factor = d.get("max_speed_factor", c.max_speed_factor,
+                             Range::positive("give the multiple of the largest expected speed "
+                                             "above which a particle stops the run, e.g. 10"));
+  c.max_energy_error =
+      d.get("max_energy_error", c.max_energy_error,
+            Range::positive("give the energy-balance error, as a fraction of the energy moved, "
+                            "that stops the run, e.g. 0.1"));
   // The message speaks in dem.dt's own terms (the originals' step): with coarse graining the
   // parcels step dt_factor times that, so the limit the user must meet is t_c/20 / dt_factor.
   if (c.dt > tc / 20 && !force) {

@@ -20,12 +20,17 @@ dem::ContactSettings read_contact(const Config& c);
 dem::RadiusDistribution read_radius(const Config& c);
 dem::CollisionSettings read_collisions(const Config& c);
 
-/// [dem] time step: dt given (times dt_factor, the coarse-graining rule's step factor), or
-/// t_c / steps_per_contact. A dt above t_c/20 at the impact speed is an error unless force_dt =
-/// true (the seed studies run at t_c/9 to t_c/16 and force it).
+/// [dem] time step and watchdog limits: dt given (times dt_factor, the coarse-graining rule's step
+/// factor), or t_c / steps_per_contact. A dt above t_c/20 at the impact speed is an error unless
+/// force_dt = true (the seed studies run at t_c/9 to t_c/16 and force it).
 struct StepChoice {
   double dt, impact_speed;
   dem::TimeScales scales;
+  double dt_factor = 1;  // the parcels' step over dem.dt (coarse graining)
+  bool forced = false;   // dem.force_dt
+  // The DEM watchdog's limits (dem_driver.hpp, DemWatch): dem.max_speed_factor and
+  // dem.max_energy_error.
+  double max_speed_factor = 10, max_energy_error = 0.1;
 };
 StepChoice choose_time_step(const Config& dem_cfg, const dem::ContactSettings& cs,
                             const std::vector<dem::Material>& mats,

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <variant>
 
 #include "core/error.hpp"
 #include "core/h5.hpp"
@@ -51,6 +52,7 @@ DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hoo
   every_snapshot_ = steps(out_.snapshot_interval);
   every_checkpoint_ = out_.checkpoint_interval > 0 ? steps(out_.checkpoint_interval) : 0;
   last_step_ = whole_cycles(std::llround(out_.end_time / dt));
+  if (hooks_.watch.on) solver_.set_speed_limit(hooks_.watch.max_speed);
 }
 
 namespace {
@@ -76,14 +78,182 @@ void restore_signals() {
 }
 }  // namespace
 
-void DemDriver::check_health(Progress& progress) const {
-  if (!hooks_.health) return;
-  if (auto msg = hooks_.health(solver_)) {
-    progress.finish();
-    restore_signals();
-    if (log_) log_->line("error: " + *msg);
-    throw Diverged(*msg);
+void DemDriver::diverged(Progress& progress, const std::string& msg) const {
+  progress.finish();
+  restore_signals();
+  if (log_) log_->line("error: " + msg);
+  throw Diverged(msg);
+}
+
+void DemDriver::check_health(Progress& progress, double stored0) {
+  if (hooks_.health)
+    if (auto msg = hooks_.health(solver_)) diverged(progress, *msg);
+  if (auto msg = dem_health(stored0)) diverged(progress, *msg);
+  last_sound_time_ = solver_.time();
+}
+
+namespace {
+
+// The fix a DEM divergence message offers: the step against the contact time, and the stiffness
+// that sets it (choose_time_step's terms: dem.dt is the original particles' step).
+std::string dem_fix(const DemWatch& w, double dt, bool speed) {
+  const StepChoice& c = w.step;
+  const double tc = c.scales.contact_time;
+  if (!(tc > 0) || !std::isfinite(tc))
+    return "the contact time t_c = " + to_text(tc) + " s for " + c.scales.where +
+           " cannot be resolved by any step: check materials.stiffness, youngs_modulus and density "
+           "against the material data";
+  const std::string ratio = dt >= tc ? to_text(dt / tc, 3) + " t_c" : "t_c/" + to_text(tc / dt, 3);
+  std::string s = "the step dt = " + to_text(dt) + " s is " + ratio +
+                  " (contact time t_c = " + to_text(tc) + " s for " + c.scales.where +
+                  " at dem.impact_speed = " + to_text(c.impact_speed) + " m/s)";
+  if (dt > tc / 20) {
+    s += ": lower dem.dt to at most t_c/20 = " + to_text(tc / 20 / c.dt_factor) + " s" +
+         (c.forced ? " and drop dem.force_dt = true, which let this step pass" : "") +
+         ", or soften the contact (a lower materials.youngs_modulus or stiffness lengthens t_c)";
+  } else {
+    s +=
+        ": impacts faster than dem.impact_speed shorten a Hertz contact, so raise dem.impact_speed "
+        "to the speeds reached (the default dem.dt follows), and check materials.youngs_modulus "
+        "and stiffness against the material data";
+    if (speed) s += "; or raise dem.max_speed_factor if particles are expected this fast";
   }
+  return s;
+}
+
+bool finite(const Vec3& a) {
+  return a.allFinite();
+}
+
+// "particle id 12 at [x, y, z] m has ..." for particle k's state.
+std::string particle_text(std::int64_t id, const Vec3& x, const Vec3& v, const Vec3& omega,
+                          const Vec3& f, const Vec3& t, const DemWatch& w) {
+  std::string s =
+      "particle id " + std::to_string(id) + (finite(x) ? " at " + vec_text(x) + " m" : "");
+  std::vector<std::string> bad;
+  if (!finite(x)) bad.push_back("position " + vec_text(x) + " m");
+  if (!finite(v)) bad.push_back("velocity " + vec_text(v) + " m/s");
+  if (!finite(omega)) bad.push_back("angular velocity " + vec_text(omega) + " rad/s");
+  if (!finite(f)) bad.push_back("force " + vec_text(f) + " N");
+  if (!finite(t)) bad.push_back("torque " + vec_text(t) + " N m");
+  if (!bad.empty()) {
+    s += " has a non-finite ";
+    for (std::size_t k = 0; k < bad.size(); ++k)
+      s += (k == 0 ? "" : k + 1 == bad.size() ? " and " : ", ") + bad[k];
+    return s;
+  }
+  return s + " moves at " + to_text(v.norm()) + " m/s, above the watchdog's limit of " +
+         to_text(w.max_speed) + " m/s (" + w.speed_basis + "; dem.max_speed_factor) (velocity " +
+         vec_text(v) + " m/s, force " + vec_text(f) + " N)";
+}
+
+}  // namespace
+
+std::optional<std::string> DemDriver::dem_health(double stored0) const {
+  const DemWatch& w = hooks_.watch;
+  if (!w.on) return std::nullopt;
+  const auto& p = solver_.particles();
+  const double dt = solver_.settings().dt;
+  const std::string at = "DEM diverged at t = " + to_text(solver_.time()) + " s (DEM step " +
+                         std::to_string(solver_.steps()) + "): ";
+  const std::string kept = "; the last checkpoint and output are kept; fix: ";
+  // The first unsound particle in storage order (the same for any thread count).
+  const double limit2 = w.max_speed * w.max_speed;
+  std::size_t fastest = 0;
+  double top2 = -1;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const double v2 = p.v[k].squaredNorm();
+    const bool sound = finite(p.x[k]) && finite(p.v[k]) && finite(p.omega[k]) &&
+                       finite(p.force[k]) && finite(p.torque[k]);
+    if (!sound || !(v2 <= limit2))
+      return at + particle_text(p.id[k], p.x[k], p.v[k], p.omega[k], p.force[k], p.torque[k], w) +
+             kept + dem_fix(w, dt, sound);
+    if (v2 > top2) top2 = v2, fastest = k;
+  }
+  // The energy balance against the energy moved: a reference the potential energy's zero does
+  // not shift. The floor covers the round-off of the potential energy's sums.
+  const dem::EnergyTotals e = solver_.energy();
+  const double error = e.stored() + e.dissipated() - e.injected(stored0);
+  const double moved = e.kinetic() + e.elastic + e.dissipated() + std::abs(e.wall_work) +
+                       std::abs(e.external_work) + std::abs(e.stiffness_change) +
+                       std::abs(e.inserted) + std::abs(e.removed);
+  const double floor = 1e-9 * (std::abs(e.potential) + std::abs(stored0));
+  if (std::abs(error) <= w.max_energy_error * moved + floor) return std::nullopt;
+  std::string msg = at + "the energy balance error " + to_text(error) + " J is " +
+                    to_text(std::abs(error) / moved) + " of the " + to_text(moved) +
+                    " J of energy moved (kinetic, elastic, dissipated and sources), above " +
+                    "dem.max_energy_error = " + to_text(w.max_energy_error);
+  if (top2 >= 0)
+    msg += "; the fastest particle, id " + std::to_string(p.id[fastest]) + " at " +
+           vec_text(p.x[fastest]) + " m, moves at " + to_text(std::sqrt(top2)) + " m/s";
+  return msg + kept + dem_fix(w, dt, false);
+}
+
+void DemDriver::dem_alarm(Progress& progress) const {
+  const dem::DemAlarm& a = *solver_.alarm();
+  const DemWatch& w = hooks_.watch;
+  std::string msg = "DEM diverged at t = " + to_text(a.time) + " s (DEM step " +
+                    std::to_string(a.step) + ", after its half kick and drift): " +
+                    particle_text(a.id, a.x, a.v, a.omega, a.force, a.torque, w) +
+                    "; the last checkpoint and output are kept; fix: " +
+                    dem_fix(w, solver_.settings().dt, a.finite);
+  // A coupled run names the side that failed first: the DEM is checked at every step, the gas at
+  // outputs, so the gas is looked at now as well.
+  if (hooks_.health) {
+    if (auto gas = hooks_.health(solver_))
+      msg += ". The gas, within its limits at t = " + to_text(last_sound_time_) +
+             " s (its last check), is outside them now too: " + *gas;
+    else
+      msg += ". The gas is within its limits";
+  }
+  diverged(progress, msg);
+}
+
+DemWatch dem_watch(const StepChoice& step, const dem::DemSolver& s,
+                   const std::vector<ExpectedSpeed>& others) {
+  std::vector<ExpectedSpeed> v = {{step.impact_speed, "dem.impact_speed"}};
+  const dem::DemSettings& set = s.settings();
+  if (const double g = set.gravity.norm(); g > 0) {
+    const Vec3 L = set.domain.length();
+    const double h = (set.gravity.cwiseAbs() / g).dot(L);  // the domain's extent along gravity
+    v.push_back({std::sqrt(2 * g * h), "the free fall across the domain"});
+  }
+  const auto motion_speed = [](const dem::PrescribedMotion& m, const auto& points) {
+    double top = 0;
+    for (const Vec3& q : points)
+      top = std::max(top, (m.velocity + m.omega * m.axis.cross(q - m.axis_point)).norm());
+    return top;
+  };
+  for (const dem::Wall& w : s.walls()) {
+    double top = 0;
+    if (const auto* p = std::get_if<dem::PlaneWall>(&w.shape)) top = p->velocity.norm();
+    if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape))
+      top = std::abs(c->omega) * c->radius;
+    if (const auto* m = std::get_if<dem::MeshWall>(&w.shape))
+      top = motion_speed(m->motion, m->mesh.vertices);
+    if (const auto* b = std::get_if<dem::BoxWall>(&w.shape))
+      top = motion_speed(b->motion, b->corners(0));
+    if (top > 0) v.push_back({top, "wall " + w.name});
+  }
+  double fastest = 0;
+  for (const Vec3& u : s.particles().v) fastest = std::max(fastest, u.norm());
+  if (fastest > 0) v.push_back({fastest, "the fastest particle at the start"});
+  ExpectedSpeed limit{0, ""};
+  for (const auto& o : others)
+    if (!o.limit)
+      v.push_back(o);
+    else if (o.speed > limit.speed)
+      limit = o;
+  const auto top = *std::max_element(
+      v.begin(), v.end(), [](const auto& a, const auto& b) { return a.speed < b.speed; });
+  DemWatch w;
+  w.on = true;
+  w.step = step;
+  w.max_speed = step.max_speed_factor * top.speed;
+  w.speed_basis = to_text(step.max_speed_factor) + " x " + to_text(top.speed) + " m/s, " + top.what;
+  if (limit.speed > w.max_speed) w.max_speed = limit.speed, w.speed_basis = limit.what;
+  w.max_energy_error = step.max_energy_error;
+  return w;
 }
 
 namespace {
@@ -247,6 +417,7 @@ int DemDriver::run(const RunContext& ctx) {
     ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
     const auto prev = f.doubles("/rate_reference");
     prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
+    last_sound_time_ = solver_.time();
     ctx.log->line("resumed from " + ckpt + " at t = " + to_text(solver_.time()) + " s (step " +
                   std::to_string(solver_.steps()) + ")");
   } else {
@@ -268,7 +439,7 @@ int DemDriver::run(const RunContext& ctx) {
   while (solver_.steps() < last_step_) {
     if (g_stop_signal && solver_.steps() % cycle == 0) {
       extra_row_ = extra_snapshot_ = false;
-      check_health(progress);
+      check_health(progress, stored0);
       write_checkpoint(ctx.dir, stored0);
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
       progress.finish();
@@ -279,6 +450,7 @@ int DemDriver::run(const RunContext& ctx) {
     }
     if (hooks_.before_step) hooks_.before_step(solver_);
     solver_.step();
+    if (solver_.alarm()) dem_alarm(progress);
     work += double(solver_.particles().size());
     const std::int64_t s = solver_.steps();
     const bool last = s == last_step_;
@@ -289,7 +461,7 @@ int DemDriver::run(const RunContext& ctx) {
     const bool row = s % every_row_ == 0 || last, snapshot = s % every_snapshot_ == 0 || last;
     const bool checkpoint = (every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last;
     PhaseLap lap;
-    if (row || snapshot || checkpoint) check_health(progress);
+    if (row || snapshot || checkpoint) check_health(progress, stored0);
     if (row) write_row(stored0, !extra_row_);
     if (snapshot) write_snapshot(ctx.dir);
     if (checkpoint) {
@@ -313,7 +485,8 @@ int DemDriver::run(const RunContext& ctx) {
 }
 
 void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double tr,
-                const std::string& where, double feed_r_min, double feed_r_max) {
+                const std::string& where, double feed_r_min, double feed_r_max,
+                const DemWatch* watch) {
   const auto& p = s.particles();
   double mass = 0, rmin = 1e300, rmax = 0;
   for (std::size_t k = 0; k < p.size(); ++k)
@@ -334,6 +507,12 @@ void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double t
               "(" + to_text(s.settings().skin / (2 * rmin)) + " d_min)");
   log.derived("interaction range beyond touch", s.interaction_range(), "m");
   log.derived("walls", double(s.walls().size()), "");
+  if (watch && watch->on) {
+    log.derived("watchdog: particle speed limit", watch->max_speed, "m/s",
+                "(" + watch->speed_basis + ")");
+    log.derived("watchdog: energy-balance error limit", watch->max_energy_error, "",
+                "(of the energy moved)");
+  }
 }
 
 }  // namespace lbdem::scenarios

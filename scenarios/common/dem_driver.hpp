@@ -5,6 +5,7 @@
 // same steps as one that never stopped. Another phase (the box's gas) joins through the hooks:
 // it steps in before_step, writes in snapshot/extra_values/save, and is watched by health.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "core/config.hpp"
 #include "core/time_series.hpp"
 #include "dem/dem_solver.hpp"
+#include "scenarios/common/dem_config.hpp"
 #include "scenarios/common/run_context.hpp"
 #include "scenarios/common/run_cost.hpp"
 
@@ -43,6 +45,34 @@ struct OutputSettings {
   static OutputSettings from(const Config& run, const Config& out);
 };
 
+/// The DEM watchdog (docs/user-guide.md, Troubleshooting): a particle whose position, velocity,
+/// angular velocity, force or torque is not finite, or that is faster than max_speed, stops the run
+/// at the step that finds it (DemSolver::alarm, checked every step); an energy-balance error above
+/// max_energy_error times the energy moved (the kinetic, elastic and dissipated energy and every
+/// source's magnitude: the potential energy's reference cancels) stops it at an output. The state
+/// is then not written: the last checkpoint and output stay.
+struct DemWatch {
+  bool on = false;
+  double max_speed = std::numeric_limits<double>::infinity();  // [m/s]
+  std::string speed_basis;  // how max_speed was set, for the banner and the message
+  double max_energy_error = 0.1;
+  StepChoice step{};  // t_c, where, dt_factor, force_dt: the fix a message offers
+};
+
+/// A speed the scenario expects particles to reach [m/s], and where it comes from; a `limit` is
+/// already a bound (the gas's watchdog speed) and is not multiplied.
+struct ExpectedSpeed {
+  double speed;
+  std::string what;
+  bool limit = false;
+};
+
+/// The watchdog of a scenario: max_speed = dem.max_speed_factor x the largest of dem.impact_speed,
+/// the free fall across the domain along gravity, the fastest moving wall's surface, the fastest
+/// particle now, and `others` (an inflow's speed), or the largest limit in `others` if higher.
+DemWatch dem_watch(const StepChoice& step, const dem::DemSolver& s,
+                   const std::vector<ExpectedSpeed>& others = {});
+
 /// Scenario-specific parts of the loop.
 struct DriverHooks {
   std::function<void(dem::DemSolver&)> before_step;  // inflow, outlet, motion, ...
@@ -60,6 +90,8 @@ struct DriverHooks {
   /// output, checkpoint and end instants are rounded up to whole cycles, where every solver
   /// stands at the same time.
   std::int64_t cycle = 1;
+  /// The DEM's own watchdog (off unless the scenario sets it: dem_watch).
+  DemWatch watch;
 };
 
 class DemDriver {
@@ -72,8 +104,15 @@ class DemDriver {
   void write_row(double stored0, bool regular = true);
   void write_snapshot(const std::string& dir);
   void write_checkpoint(const std::string& dir, double stored0) const;
-  /// Throws Diverged (after restoring the signal handlers) if the health hook objects.
-  void check_health(Progress& progress) const;
+  /// Throws Diverged (after restoring the signal handlers) if the health hook (the gas) or the
+  /// DEM watchdog objects; the gas is asked first, the DEM having been checked at every step.
+  void check_health(Progress& progress, double stored0);
+  /// The DEM watchdog on the current state (every particle, and the energy balance): the message,
+  /// or nullopt if sound.
+  std::optional<std::string> dem_health(double stored0) const;
+  /// Stops the run for DemSolver::alarm, naming the gas's state too in a run with one.
+  [[noreturn]] void dem_alarm(Progress& progress) const;
+  [[noreturn]] void diverged(Progress& progress, const std::string& msg) const;
 
   dem::DemSolver& solver_;
   OutputSettings out_;
@@ -83,15 +122,17 @@ class DemDriver {
   bool extra_row_ = false, extra_snapshot_ = false;
   double prev_t_ = 0;
   std::int64_t prev_pp_ = 0, prev_pw_ = 0;
+  double last_sound_time_ = 0;  // the last output instant that passed every check [s]
   TimeSeries ts_;
   Log* log_ = nullptr;
   RunCostMeter cost_;
 };
 
 /// Derived DEM numbers for the start-up banner. The radius range counts a feed's
-/// radii (feed_r_min > 0) with the particles present at the start.
+/// radii (feed_r_min > 0) with the particles present at the start; `watch` adds the watchdog's
+/// limits.
 void dem_banner(Log& log, const dem::DemSolver& s, double impact_speed, double contact_time,
                 double rayleigh_time, const std::string& where, double feed_r_min = 0,
-                double feed_r_max = 0);
+                double feed_r_max = 0, const DemWatch* watch = nullptr);
 
 }  // namespace lbdem::scenarios

@@ -215,8 +215,9 @@ void RheometerScenario::banner(Log& log) const {
                   to_text(rpm_ * 2 * kPi / 60 * 0.5 * g.blade_span) + " m/s");
   log.derived("powder mass placed", placed_mass_, "kg", "asked " + to_text(fill_mass_) + " kg");
   log.derived("placed bed top (before settling)", bed_top_, "m");
+  const DemWatch w = dem_watch(step_, *solver_);
   dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,
-             step_.scales.rayleigh_time, step_.scales.where);
+             step_.scales.rayleigh_time, step_.scales.where, 0.0, 0.0, &w);
 }
 
 int RheometerScenario::run(const RunContext& ctx) {
@@ -233,6 +234,7 @@ int RheometerScenario::run(const RunContext& ctx) {
     return std::vector<double>{drive_torque(), cup_torque(), floor_torque(), angular_momentum(),
                                angle};
   };
+  hooks.watch = dem_watch(step_, *solver_);
   DemDriver driver(*solver_, out_, hooks);
   return driver.run(ctx);
 }
