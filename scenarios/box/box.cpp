@@ -41,6 +41,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
     mats.back().name = "none";
   } else {
     mats = read_materials(cfg);
+    implausible_ = implausible_inputs(cfg, mats);
   }
   const std::string wall_mat_name = box.get_string("wall_material", mats.front().name);
   const int wall_mat = material_index(mats, wall_mat_name, box.path("wall_material"));
@@ -182,7 +183,7 @@ BoxScenario::BoxScenario(const Config& cfg) {
     // Contact parameters of parcels (the config gives the originals); r_min is a parcel radius.
     const double dt_factor = cg_.dt_factor(mats.front(), r_min / l);
     cg_.apply(mats, r_min / l);
-    step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor);
+    step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor, implausible_);
     s.dt = step_.dt;
     if (has_fluid) {
       sub_ = conform_dem_step(step_.dt, fluid_.dt);
@@ -193,6 +194,9 @@ BoxScenario::BoxScenario(const Config& cfg) {
     s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
   }
   out_ = OutputSettings::from(run, cfg.section("output"));
+  const bool dt_given = !gas_only_ && cfg.has("dem.dt");
+  check_step_count(s.dt, out_.end_time, dt_given ? "dem.dt" : "",
+                   dt_given ? shortest_text(step_.dt / step_.dt_factor) : "", implausible_);
 
   solver_ = std::make_unique<dem::DemSolver>(s, mats);
   for (auto& w : walls) add_wall(std::move(w));
@@ -258,6 +262,7 @@ void BoxScenario::banner(Log& log) const {
   if (gas_only_) {
     log.line("DEM: no particles (a pure gas run); the DEM keeps the clock at the gas step");
   } else {
+    for (const auto& w : implausible_) log.line(w.warning());
     for (const auto& line : cg_.banner) log.line(line);
     const DemWatch w = watch();
     dem_banner(log, *solver_, step_.impact_speed, step_.scales.contact_time,

@@ -111,6 +111,7 @@ class BoxScenario : public Scenario {
   bool gas_only_ = false;
   OutputSettings out_;
   StepChoice step_;
+  std::vector<Implausible> implausible_;  // warned about in the banner
   CoarseGrain cg_;
   Inflow inflow_;
   Outlet outlet_;

@@ -25,12 +25,84 @@ std::vector<dem::Material> read_materials(const Config& cfg) {
                                Range::non_negative("give a rolling friction >= 0"));
     x.hamaker =
         m.get("hamaker", x.hamaker, Range::non_negative("give a Hamaker constant in J (>= 0)"));
+    for (std::size_t j = 0; j < out.size(); ++j)
+      if (out[j].name == x.name)
+        throw InputError(m.path("name"), "\"" + x.name + "\"",
+                         "materials[" + std::to_string(j) + "] has this name too",
+                         "give each [[materials]] its own name");
     out.push_back(x);
   }
   if (out.empty())
     throw InputError("materials", "", "no [[materials]] table",
                      "add at least one [[materials]] with a name");
   return out;
+}
+
+std::string Implausible::warning() const {
+  return "warning: " + InputError::format(key, value, problem, "") + "; the run goes on";
+}
+
+std::vector<Implausible> implausible_inputs(const Config& cfg,
+                                            const std::vector<dem::Material>& mats) {
+  std::vector<Implausible> out;
+  const auto tables = cfg.table_array("materials");
+  const auto outside = [&](const Config& m, const char* key, double v, double lo, double hi,
+                           const std::string& unit, const std::string& what) {
+    if (m.has(key) && !(v >= lo && v <= hi))
+      out.push_back({m.path(key), shortest_text(v),
+                     "outside " + to_text(lo) + " - " + to_text(hi) + " " + unit + ", " + what});
+  };
+  for (std::size_t k = 0; k < tables.size() && k < mats.size(); ++k) {
+    const Config& m = tables[k];
+    const dem::Material& x = mats[k];
+    outside(m, "density", x.density, 100, 25000, "kg/m^3",
+            "the solids from aerogels to osmium (a value in g/cm^3?)");
+    outside(m, "youngs_modulus", x.youngs_modulus, 1e4, 1e12, "Pa",
+            "the solids from soft rubber to diamond (a value in MPa or GPa?)");
+    outside(m, "stiffness", x.stiffness, 1e-3, 1e10, "N/m",
+            "the linear springs of DEM practice (a value in N/mm?)");
+    if (m.has("poisson_ratio") && x.poisson_ratio < 0)
+      out.push_back({m.path("poisson_ratio"), shortest_text(x.poisson_ratio),
+                     "below 0, which only auxetic foams have"});
+  }
+  return out;
+}
+
+namespace {
+// The step's culprit: the key the user wrote, not the derived dt.
+[[noreturn]] void refuse_step(double dt, double end_time, const std::string& problem,
+                              const std::string& dt_key, const std::string& dt_value,
+                              const std::vector<Implausible>& suspects) {
+  if (!dt_key.empty())
+    throw InputError(dt_key, dt_value, problem,
+                     "give a step that divides run.end_time = " + to_text(end_time) +
+                         " s into 1 to 2^53 steps, or leave " + dt_key +
+                         " out for t_c / dem.steps_per_contact");
+  if (!suspects.empty()) {
+    const Implausible& s = suspects.front();
+    throw InputError(s.key, s.value,
+                     "makes the contact time, and with it the step dt = " + to_text(dt) +
+                         " s, unusable: " + problem + " (" + s.problem + ")",
+                     "give a real material's value");
+  }
+  throw InputError("run.end_time", shortest_text(end_time),
+                   problem + " at the step dt = " + to_text(dt) + " s",
+                   "give a run.end_time of many steps, or a shorter step");
+}
+}  // namespace
+
+void check_step_count(double dt, double end_time, const std::string& dt_key,
+                      const std::string& dt_value, const std::vector<Implausible>& suspects) {
+  if (!(dt > 0) || !std::isfinite(dt))
+    refuse_step(dt, end_time, "the step is not a finite positive time", dt_key, dt_value, suspects);
+  const double steps = end_time / dt;
+  if (!(steps >= 0.5))
+    refuse_step(dt, end_time, "the run would take no step to run.end_time", dt_key, dt_value,
+                suspects);
+  if (!(steps <= 9007199254740992.0))  // 2^53: step counts stay exact in a double
+    refuse_step(dt, end_time,
+                "the run would take " + to_text(steps) + " steps to run.end_time (more than 2^53)",
+                dt_key, dt_value, suspects);
 }
 
 int material_index(const std::vector<dem::Material>& mats, const std::string& name,
@@ -103,7 +175,8 @@ dem::CollisionSettings read_collisions(const Config& c) {
 
 StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
                             const std::vector<dem::Material>& mats,
-                            const std::vector<int>& wall_mats, double r_min, double dt_factor) {
+                            const std::vector<int>& wall_mats, double r_min, double dt_factor,
+                            const std::vector<Implausible>& suspects) {
   StepChoice c{};
   c.impact_speed =
       d.get("impact_speed", 1.0, Range::positive("give the characteristic impact speed in m/s"));
@@ -113,6 +186,9 @@ StepChoice choose_time_step(const Config& d, const dem::ContactSettings& cs,
   // dem.dt is the ORIGINAL particles' step, scaled for parcels; the default is recorded that way
   // too (t_c / per of the parcels over the factor), so the resolved config of a coarse-grained run
   // resumes with the same step instead of scaling it a second time.
+  // A default step of inf or 0 comes from an input that made t_c so: name that input, not dem.dt.
+  if (const double def = tc / per; !d.has("dt") && (!(def > 0) || !std::isfinite(def)))
+    check_step_count(def, 1.0, "", "", suspects);
   c.dt = d.get("dt", tc / per / dt_factor, Range::positive("give the time step in s")) * dt_factor;
   const bool force = d.get_bool("force_dt", false);
   c.dt_factor = dt_factor, c.forced = force;

@@ -34,9 +34,11 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
       out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
   o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10,
                                 Range::positive("give the snapshot interval in s"));
+  // No way to switch checkpoints off: they are what a killed run resumes from.
   o.checkpoint_interval =
       out.get("checkpoint_interval", o.end_time / 4,
-              Range::non_negative("give the checkpoint interval in s (0: only at the end)"));
+              Range::positive("give the checkpoint interval in s, e.g. run.end_time / 4 (the "
+                              "default); a killed run loses at most this much"));
   return o;
 }
 

@@ -41,7 +41,7 @@ struct OutputSettings {
   double end_time = 1;             // [s]
   double interval = 1e-2;          // timeseries.csv row interval [s]
   double snapshot_interval = 0.1;  // particle snapshot interval [s]
-  double checkpoint_interval = 0;  // [s]; 0: only at the end
+  double checkpoint_interval = 0;  // [s], > 0 (and at the end)
   static OutputSettings from(const Config& run, const Config& out);
 };
 

@@ -65,6 +65,7 @@ RheometerScenario::RheometerScenario(const Config& cfg) {
   s.collisions = read_collisions(cfg.section("output").section("collisions"));
   cg_ = read_coarse_grain(cfg.section("coarse_grain"), s.contact.normal);
   auto mats = read_materials(cfg);
+  implausible_ = implausible_inputs(cfg, mats);
   const Config pc = cfg.section("particles");
   const int mat =
       material_index(mats, pc.get_string("material", mats.front().name), pc.path("material"));
@@ -161,11 +162,14 @@ RheometerScenario::RheometerScenario(const Config& cfg) {
   std::vector<int> wall_mats(walls.size(), wall_mat);
   const double dt_factor = cg_.dt_factor(mats[mat], r_min / cg_.l());
   cg_.apply(mats, r_min / cg_.l());
-  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor);
+  step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor, implausible_);
   s.dt = step_.dt;
   s.skin = dcfg.get("skin", 0.2 * r_min, Range::positive("give the neighbour skin in m"));
   s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
   out_ = OutputSettings::from(run, cfg.section("output"));
+  const bool dt_given = cfg.has("dem.dt");
+  check_step_count(s.dt, out_.end_time, dt_given ? "dem.dt" : "",
+                   dt_given ? shortest_text(step_.dt / step_.dt_factor) : "", implausible_);
 
   solver_ = std::make_unique<dem::DemSolver>(s, mats);
   for (auto& w : walls) solver_->add_wall(std::move(w));
@@ -200,6 +204,7 @@ double RheometerScenario::angular_momentum() const {
 
 void RheometerScenario::banner(Log& log) const {
   const auto& g = geo_;
+  for (const auto& w : implausible_) log.line(w.warning());
   for (const auto& line : cg_.banner) log.line(line);
   log.line("Rheometer:");
   log.derived("cup radius / height", g.cup_radius, "m", "height " + to_text(g.cup_height) + " m");

@@ -53,6 +53,7 @@ class RheometerScenario : public Scenario {
   RheometerGeometry geo_;
   OutputSettings out_;
   StepChoice step_;
+  std::vector<Implausible> implausible_;  // warned about in the banner
   CoarseGrain cg_;
   double rpm_ = 600, start_ = 0.2, ramp_ = 0.02;
   double fill_mass_ = 0, placed_mass_ = 0, bed_top_ = 0, mean_diameter_ = 0;

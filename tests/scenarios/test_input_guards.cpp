@@ -1,0 +1,83 @@
+// Inputs that would switch a run's protection off or make it do nothing are refused before
+// anything is written (exit 2, one line naming the key the user wrote, no run folder): a checkpoint
+// interval of 0 or below, two [[materials]] of one name, a step that makes no step to
+// run.end_time or is not a finite time. Implausible material values only warn, one line each.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "helpers/cli.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using lbdem::test::cli;
+using lbdem::test::read_text;
+using lbdem::test::tmpdir;
+
+// 150 beads of the default box near its floor, for 2 ms.
+const std::string kSmall =
+    " --set fill[0].count=150 --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'"
+    " --set run.end_time=0.002";
+
+// Runs the box with `args`; checks exit 2, one line naming `key` with a fix, and no run folder.
+void refused(const std::string& args, const std::string& key) {
+  const std::string out = tmpdir("guard");
+  const auto r = cli("run box --out " + out + kSmall + " " + args);
+  INFO(args << " -> " << r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: '" + key + "'", 0) == 0);
+  CHECK(r.err.find("fix:") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("a checkpoint interval of 0 or below is refused", "[scenarios][input]") {
+  refused("--set output.checkpoint_interval=0", "output.checkpoint_interval");
+  refused("--set output.checkpoint_interval=-1", "output.checkpoint_interval");
+}
+
+TEST_CASE("two [[materials]] of one name are refused", "[scenarios][input]") {
+  const std::string file = tmpdir("two_glasses") + ".toml";
+  std::ofstream(file) << read_text(std::string(LBDEM_SOURCE_DIR) +
+                                   "/scenarios/box/presets/default.toml")
+                      << "\n[[materials]]\nname = \"glass\"\ndensity = 1000\n";
+  refused("--config " + file, "materials[1].name");
+  CHECK(cli("run box --config " + file).err.find("materials[0] has this name too") !=
+        std::string::npos);
+  fs::remove(file);
+}
+
+TEST_CASE("a step that makes no step, or too many, is refused naming the key written",
+          "[scenarios][input]") {
+  // dem.dt longer than the run, and one that would take 2e27 steps.
+  refused("--set dem.force_dt=true --set dem.dt=1e300", "dem.dt");
+  refused("--set dem.dt=1e-30", "dem.dt");
+  // A density that makes t_c, and so the default step, infinite: the density is named, not
+  // dem.dt = inf.
+  refused("--set materials[0].density=1e300", "materials[0].density");
+  refused("--set materials[0].youngs_modulus=1e300", "materials[0].youngs_modulus");
+  // An end before the first step.
+  refused("--set run.end_time=1e-12", "run.end_time");
+}
+
+TEST_CASE("an implausible material value warns in one line and the run goes on",
+          "[scenarios][input]") {
+  // 2.5 kg/m^3: a density in g/cm^3. The run is valid and finishes.
+  const std::string out = tmpdir("plausible");
+  const auto r = cli("run box --out " + out + kSmall + " --set materials[0].density=2.5");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  const std::string log = read_text(out + "/log.txt");
+  const std::string w = "warning: 'materials[0].density' = 2.5: outside 100 - 25000 kg/m^3";
+  CHECK(log.find(w) != std::string::npos);
+  CHECK(log.find(w, log.find(w) + 1) == std::string::npos);  // once
+  CHECK(log.find("warning: 'materials[0].youngs_modulus'") == std::string::npos);
+  CHECK(read_text(out + "/status") == "finished\n");
+  fs::remove_all(out);
+}
