@@ -174,7 +174,8 @@ int run_scenario(const RunOptions& opt) {
     throw InputError("--resume", opt.resume,
                      fs::exists(opt.resume) ? "is a file, not a run folder" : "no such folder",
                      "give the run folder of the run to continue (its --out)");
-  if (resume && !fs::exists(opt.resume + "/checkpoint.h5"))
+  if (resume && !fs::exists(opt.resume + "/checkpoint.h5") &&
+      !fs::exists(opt.resume + "/" + kPreviousCheckpoint))
     throw InputError("--resume", opt.resume, "no checkpoint.h5 in that folder",
                      "give a run folder that has one");
   const ScenarioEntry* entry = nullptr;

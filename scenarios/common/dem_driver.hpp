@@ -37,6 +37,10 @@ struct Diverged : std::runtime_error {
 };
 inline constexpr int kDivergedExit = 3;
 
+/// The generation before checkpoint.h5 in a run folder (DemDriver keeps two; a resume takes the
+/// newest that verifies).
+inline constexpr const char* kPreviousCheckpoint = "checkpoint.prev.h5";
+
 struct OutputSettings {
   double end_time = 1;             // [s]
   double interval = 1e-2;          // timeseries.csv row interval [s]
@@ -103,7 +107,10 @@ class DemDriver {
  private:
   void write_row(double stored0, bool regular = true);
   void write_snapshot(const std::string& dir);
+  /// Keeps the current checkpoint as the previous generation, writes the new one and verifies
+  /// it (reopened: format, positions and velocities against their checksum).
   void write_checkpoint(const std::string& dir, double stored0) const;
+  void write_checkpoint_file(const std::string& file, double stored0) const;
   /// Throws Diverged (after restoring the signal handlers) if the health hook (the gas) or the
   /// DEM watchdog objects; the gas is asked first, the DEM having been checked at every step.
   void check_health(Progress& progress, double stored0);
