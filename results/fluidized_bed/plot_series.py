@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Draws bed_series.png from the kept series of this folder: bed height and pressure drop over
-time for the Bond-number-10 original against its coarse-grained runs (left) and for the
-cohesionless CG 2-4 runs (right). Run from the repository root:
+"""Draws the figures of this folder from its kept series: bed_series.png, bed height and
+pressure drop over time for the Bond-number-10 original against its coarse-grained runs (left)
+and for the cohesionless CG 2-4 runs (right); displaced_gas.png, the cohesionless CG 3 and 4 beds
+before and with the displaced gas. Run from the repository root:
     /usr/bin/python3 results/fluidized_bed/plot_series.py"""
 import os
 
@@ -46,5 +47,24 @@ for col, (title, cases) in enumerate(groups):
 ax[1, 1].legend(fontsize=8, loc="lower right")
 fig.tight_layout()
 out = os.path.join(HERE, "bed_series.png")
+fig.savefig(out, dpi=110)
+print("wrote", out)
+
+# The cohesionless CG 3 and 4 beds before and with the displaced gas (d(eps)/dt in the gas
+# continuity): the plug oscillation the term damps.
+fig, ax = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
+for name, label in [("cg3", "CG 3, before the term"), ("cg3_displaced", "CG 3, displaced gas"),
+                    ("cg4", "CG 4, before the term"), ("cg4_displaced", "CG 4, displaced gas")]:
+    t, h, dp = series(name)
+    keep = t >= 0.15
+    ax[0].plot(t[keep], h[keep], lw=1, label=label)
+    ax[1].plot(t[keep], dp[keep], lw=0.8, label=label)
+ax[0].set_ylabel("bed height [mm]")
+ax[1].set_ylabel("pressure drop [Pa]")
+ax[1].set_xlabel("time [s]")
+ax[1].axhline(WEIGHT, color="k", ls=":", lw=0.8, label="weight / area + gas head")
+ax[0].legend(fontsize=8)
+fig.tight_layout()
+out = os.path.join(HERE, "displaced_gas.png")
 fig.savefig(out, dpi=110)
 print("wrote", out)
