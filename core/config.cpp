@@ -598,6 +598,30 @@ std::string unknown_key_fix(const std::string& written, const std::set<std::stri
          (table.empty() ? std::string("the top level") : "[" + table + "]") + " are " + list + ")";
 }
 
+namespace {
+void flatten_values(const toml::table& t, const std::string& prefix,
+                    std::vector<std::pair<std::string, std::string>>& out) {
+  for (auto&& [k, v] : t) {
+    const std::string p =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (const auto* sub = v.as_table()) {
+      flatten_values(*sub, p, out);
+    } else if (const auto* arr = v.as_array(); arr && arr->is_array_of_tables() && !arr->empty()) {
+      for (std::size_t i = 0; i < arr->size(); ++i)
+        flatten_values(*arr->get(i)->as_table(), p + "[" + std::to_string(i) + "]", out);
+    } else {
+      out.emplace_back(p, describe_full(v));
+    }
+  }
+}
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> Config::resolved_values() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  flatten_values(s_->resolved, "", out);
+  return out;
+}
+
 std::string Config::resolved_toml() const {
   std::ostringstream os;
   os << s_->resolved << "\n";

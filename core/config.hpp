@@ -88,6 +88,9 @@ class Config {
   void check_unknown_keys() const;
   /// The input with every default that was read filled in, as TOML text.
   std::string resolved_toml() const;
+  /// Every value of the resolved config as {path, value on one line}, in path order; tables
+  /// (inline ones too) are opened and arrays of tables indexed: materials[0].restitution.
+  std::vector<std::pair<std::string, std::string>> resolved_values() const;
   /// Full dotted path of `key` under this view.
   std::string path(std::string_view key) const;
   /// Every key read so far, by path with the indices of arrays of tables removed

@@ -47,6 +47,24 @@ void H5Out::write_raw(const std::string& name, hid_t type, const void* data, int
   bool empty = false;
   for (int r = 0; r < rank; ++r) empty = empty || dims[r] == 0;
   if (!empty) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + name);
+  if (checksums_) {
+    std::size_t bytes = H5Tget_size(type);
+    for (int r = 0; r < rank; ++r) bytes *= dims[r];
+    const std::uint64_t h = checksum64(data, empty ? 0 : bytes);
+    std::int64_t v;
+    std::memcpy(&v, &h, sizeof v);
+    hid_t scalar = H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(set, kChecksumAttr, H5T_NATIVE_INT64, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    const bool ok = a >= 0 && H5Awrite(a, H5T_NATIVE_INT64, &v) >= 0;
+    if (a >= 0) H5Aclose(a);
+    H5Sclose(scalar);
+    if (!ok) {
+      H5Dclose(set);
+      H5Sclose(space);
+      throw std::runtime_error("HDF5: checksum of " + name + " failed");
+    }
+    ++checksummed_;
+  }
   H5Dclose(set);
   H5Sclose(space);
 }
@@ -122,6 +140,7 @@ void H5Out::external_link(const std::string& name, const std::string& file,
 }
 
 void H5Out::commit() {
+  if (checksums_) attr(kChecksumCountAttr, checksummed_);
   check(H5Fclose(file_), "close " + tmp_);
   file_ = -1;
   rename_into_place(tmp_, path_);
@@ -218,8 +237,66 @@ std::string H5In::attr_string(const std::string& name, const std::string& object
   return s;
 }
 
+namespace {
+// The datasets below a group, by full path (H5Lvisit: hard links only, so each once).
+herr_t collect_dataset(hid_t group, const char* name, const H5L_info_t* info, void* out) {
+  if (info->type != H5L_TYPE_HARD) return 0;
+  const hid_t obj = H5Oopen(group, name, H5P_DEFAULT);
+  if (obj < 0) return -1;
+  if (H5Iget_type(obj) == H5I_DATASET)
+    static_cast<std::vector<std::string>*>(out)->push_back(std::string("/") + name);
+  H5Oclose(obj);
+  return 0;
+}
+}  // namespace
+
+std::optional<std::string> H5In::checksum_fault() const {
+  std::vector<std::string> sets;
+  if (H5Lvisit(file_, H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &sets) < 0)
+    return "its datasets cannot be listed";
+  std::int64_t counted = 0;
+  for (const auto& name : sets) {
+    if (!has_attr(H5Out::kChecksumAttr, name)) continue;
+    ++counted;
+    const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    if (set < 0) return "dataset " + name + " cannot be opened";
+    const hid_t ftype = H5Dget_type(set), space = H5Dget_space(set);
+    const hid_t mem = H5Tget_native_type(ftype, H5T_DIR_ASCEND);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    std::vector<char> raw(n > 0 ? std::size_t(n) * H5Tget_size(mem) : 0);
+    const bool read =
+        raw.empty() || H5Dread(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()) >= 0;
+    H5Tclose(mem);
+    H5Tclose(ftype);
+    H5Sclose(space);
+    H5Dclose(set);
+    if (!read) return "dataset " + name + " cannot be read";
+    const std::uint64_t h = checksum64(raw.data(), raw.size());
+    std::int64_t v;
+    std::memcpy(&v, &h, sizeof v);
+    if (v != attr_int(H5Out::kChecksumAttr, name)) return "dataset " + name + " fails its checksum";
+  }
+  if (has_checksums() && counted != attr_int(H5Out::kChecksumCountAttr))
+    return std::to_string(counted) + " datasets carry a checksum, " +
+           std::to_string(attr_int(H5Out::kChecksumCountAttr)) + " were written";
+  return std::nullopt;
+}
+
 bool H5In::has_attr(const std::string& name, const std::string& object) const {
   return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::uint64_t checksum64(const void* data, std::size_t bytes) {
+  const auto* b = static_cast<const unsigned char*>(data);
+  std::uint64_t h = 1469598103934665603ull;
+  std::size_t k = 0;
+  for (; k + 8 <= bytes; k += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, b + k, 8);
+    h = (h ^ w) * 1099511628211ull;
+  }
+  for (; k < bytes; ++k) h = (h ^ b[k]) * 1099511628211ull;
+  return h;
 }
 
 void write_file_atomic(const std::string& path, const std::string& content) {

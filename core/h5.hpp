@@ -5,6 +5,8 @@
 
 #include <hdf5.h>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,14 +34,23 @@ class H5Out {
   void attr(const std::string& name, std::int64_t v, const std::string& object = "/");
   void attr(const std::string& name, const std::string& v, const std::string& object = "/");
   void external_link(const std::string& name, const std::string& file, const std::string& object);
+  /// From here on every dataset written carries a checksum of its bytes (attribute
+  /// kChecksumAttr), and the file the count of them (kChecksumCountAttr, at commit): what
+  /// H5In::checksum_fault verifies (checkpoints: a bit flipped on disk, a file cut short).
+  void checksum_datasets() { checksums_ = true; }
   /// Closes the file and renames it into place.
   void commit();
+
+  static constexpr const char* kChecksumAttr = "checksum_fnv1a64";
+  static constexpr const char* kChecksumCountAttr = "checksummed_datasets";
 
  private:
   void write_raw(const std::string& name, hid_t type, const void* data, int rank,
                  const hsize_t* dims);
   std::string path_, tmp_;
   hid_t file_ = -1;
+  bool checksums_ = false;
+  std::int64_t checksummed_ = 0;
 };
 
 class H5In {
@@ -59,6 +70,11 @@ class H5In {
   std::int64_t attr_int(const std::string& name, const std::string& object = "/") const;
   std::string attr_string(const std::string& name, const std::string& object = "/") const;
   bool has_attr(const std::string& name, const std::string& object = "/") const;
+  /// Whether the file was written with H5Out::checksum_datasets.
+  bool has_checksums() const { return has_attr(H5Out::kChecksumCountAttr); }
+  /// nullopt if every dataset with a checksum matches it and their count is the one written;
+  /// else which dataset fails (reads every such dataset whole).
+  std::optional<std::string> checksum_fault() const;
 
  private:
   std::size_t read_raw(const std::string& name, hid_t type, std::vector<char>& out,
@@ -66,6 +82,9 @@ class H5In {
   std::string path_;
   hid_t file_ = -1;
 };
+
+/// FNV-1a over 8-byte words (then the bytes left over): the checksum of H5Out::checksum_datasets.
+std::uint64_t checksum64(const void* data, std::size_t bytes);
 
 /// Writes text to <path>.tmp and renames it over <path> (atomic on POSIX).
 void write_file_atomic(const std::string& path, const std::string& content);

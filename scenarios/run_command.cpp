@@ -17,6 +17,7 @@
 #include "core/h5.hpp"
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
+#include "scenarios/common/checkpoint_check.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
 #include "scenarios/fluidized_bed/validation_study.hpp"
@@ -223,6 +224,20 @@ int run_scenario(const RunOptions& opt) {
 
   const std::string dir =
       resume ? opt.resume : (opt.out.empty() ? "runs/" + name + "-" + stamp() : opt.out);
+  // What every checkpoint records; a resume is checked against it before anything is written
+  // (checkpoint_check.hpp), so a refused one leaves the folder, status included, as it was.
+  const RunIdentity identity = run_identity(name, cfg, scenario->lattice());
+  ResumePoint point;
+  if (resume) {
+    point = check_resume(dir, identity, scenario->output().end_time);
+    if (point.finished) {
+      std::cout << "the run in " << dir << " finished at t = " << to_text(point.time_s)
+                << " s (run.end_time = " << to_text(point.finished_end_time)
+                << " s); nothing to do, nothing changed: raise run.end_time (--set "
+                   "run.end_time=...) to extend it\n";
+      return 0;
+    }
+  }
   if (!resume) {
     if (fs::exists(dir) && !fs::is_empty(dir))
       throw InputError("--out", dir, "folder exists and is not empty",
@@ -235,15 +250,12 @@ int run_scenario(const RunOptions& opt) {
   write_file_atomic(dir + "/status", "running\n");
   log.line("lbdem " + std::string(resume ? "resuming " : "running ") + name + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
+  for (const auto& w : point.warnings) log.line(w);
   scenario->banner(log);
-  RunContext ctx{dir, resume, omp_get_max_threads(), &log, !opt.no_plots};
+  const RunContext ctx{
+      dir, resume, omp_get_max_threads(), &log, !opt.no_plots, point.checkpoint, &identity};
   // A resumed run's wall time covers what this invocation simulated, from its checkpoint on.
-  double t_start = 0.0;
-  try {
-    if (resume) t_start = H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem");
-  } catch (const std::exception&) {
-    // A damaged checkpoint fails the run below with its own message; the timing can wait.
-  }
+  const double t_start = resume ? point.time_s : 0.0;
   PhaseTimer::global().reset();
   const auto t0 = RunClock::now();
   int rc = 0;

@@ -419,6 +419,12 @@ std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
   return v;
 }
 
+std::array<std::int64_t, 3> BoxScenario::lattice() const {
+  if (!gas_) return {0, 0, 0};
+  const auto& g = gas_->settings();
+  return {g.nx, g.ny, g.nz};
+}
+
 int BoxScenario::run(const RunContext& ctx) {
   DriverHooks hooks;
   hooks.before_step = [this, &ctx](dem::DemSolver& s) {

@@ -75,6 +75,7 @@ class BoxScenario : public Scenario {
   /// hand).
   void before_step(dem::DemSolver& s);
   const OutputSettings& output() const override { return out_; }
+  std::array<std::int64_t, 3> lattice() const override;
   /// The DEM watchdog's limits (dem_driver.hpp): off for a pure gas run; the walls a scenario
   /// built on the box added count.
   DemWatch watch() const;

@@ -14,6 +14,7 @@
 #include "core/h5.hpp"
 #include "core/progress.hpp"
 #include "core/time_series.hpp"
+#include "scenarios/common/checkpoint_check.hpp"
 
 namespace lbdem::scenarios {
 
@@ -388,43 +389,7 @@ void DemDriver::write_snapshot(const std::string& dir) {
   write_file_atomic(dir + "/particles.xdmf", x);
 }
 
-namespace {
-
-// FNV-1a over the bytes of the positions and velocities: the checksum a checkpoint is verified by
-// after writing and before a resume (a bit flipped on disk, a file cut short).
-std::int64_t state_hash(const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const auto* a : {&x, &v}) {
-    const auto* b = reinterpret_cast<const unsigned char*>(a->data());
-    for (std::size_t k = 0; k < a->size() * sizeof(Vec3); ++k) h = (h ^ b[k]) * 1099511628211ull;
-  }
-  std::int64_t out;
-  std::memcpy(&out, &h, sizeof out);
-  return out;
-}
-
-// nullopt if `file` opens as a checkpoint whose positions and velocities match their checksum
-// (a checkpoint written before the checksum is taken as it is); else what is wrong.
-std::optional<std::string> checkpoint_fault(const std::string& file) {
-  try {
-    if (!fs::exists(file)) return "missing";
-    const H5In f(file);
-    if (!f.has_attr("format") || f.attr_string("format") != "lbdem-checkpoint-1")
-      return "not an lbdem checkpoint";
-    if (!f.has_attr("state_hash", "/dem")) return std::nullopt;
-    const auto x = f.vec3s("/dem/x"), v = f.vec3s("/dem/v");
-    if (x.size() != v.size()) return "positions and velocities differ in count";
-    if (state_hash(x, v) != f.attr_int("state_hash", "/dem"))
-      return "the positions and velocities fail their checksum";
-    return std::nullopt;
-  } catch (const std::exception& e) {
-    return std::string(e.what());
-  }
-}
-
-}  // namespace
-
-void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
+void DemDriver::write_checkpoint(const std::string& dir, double stored0, bool final) const {
   // Two generations: the checkpoint that verifies becomes checkpoint.prev.h5 (a hard link renamed
   // over the older one, so checkpoint.h5 never goes missing) before the new one replaces it.
   const std::string file = dir + "/checkpoint.h5", prev = dir + "/" + kPreviousCheckpoint;
@@ -435,15 +400,16 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0) const {
     if (ec) fs::copy_file(file, prev + ".tmp", fs::copy_options::overwrite_existing);
     fs::rename(prev + ".tmp", prev);
   }
-  write_checkpoint_file(file, stored0);
+  write_checkpoint_file(file, stored0, final);
   if (const auto fault = checkpoint_fault(file))
     throw std::runtime_error("the checkpoint just written, " + file + ", does not verify (" +
                              *fault + "); the generation before is kept as " + prev);
 }
 
-void DemDriver::write_checkpoint_file(const std::string& file, double stored0) const {
+void DemDriver::write_checkpoint_file(const std::string& file, double stored0, bool final) const {
   H5Out f(file);
-  f.attr("format", std::string("lbdem-checkpoint-1"));
+  f.checksum_datasets();
+  f.attr("format", std::string(kCheckpointFormat));
   f.attr("stored_energy_at_start_J", stored0);
   f.attr("timeseries_rows", std::int64_t(ts_.rows() - (extra_row_ ? 1 : 0)));
   std::vector<double> snaps = snapshot_times_;
@@ -451,7 +417,9 @@ void DemDriver::write_checkpoint_file(const std::string& file, double stored0) c
   f.write("/snapshot_times_s", snaps);
   f.write("/rate_reference", std::vector<double>{prev_t_, double(prev_pp_), double(prev_pw_)});
   solver_.save(f);
-  f.attr("state_hash", state_hash(solver_.particles().x, solver_.particles().v), "/dem");
+  if (identity_)
+    save_identity(f, *identity_, std::int64_t(solver_.particles().size()),
+                  final ? out_.end_time : 0.0);
   if (hooks_.save) hooks_.save(f);
   cost_.save(f, solver_.time());
   f.commit();
@@ -463,19 +431,10 @@ int DemDriver::run(const RunContext& ctx) {
   cols.insert(cols.end(), hooks_.extra_columns.begin(), hooks_.extra_columns.end());
   double stored0 = 0;
   std::string ckpt = ctx.dir + "/checkpoint.h5";
+  identity_ = ctx.identity;
   if (ctx.resume) {
-    // The newest generation that verifies.
-    if (const auto fault = checkpoint_fault(ckpt)) {
-      const std::string prev = ctx.dir + "/" + kPreviousCheckpoint;
-      if (const auto older = checkpoint_fault(prev))
-        throw InputError("--resume", ctx.dir,
-                         "no checkpoint verifies: checkpoint.h5 (" + *fault + "), " +
-                             kPreviousCheckpoint + " (" + *older + ")",
-                         "start the run anew");
-      ctx.log->line("warning: checkpoint.h5 does not verify (" + *fault + "); resuming from " +
-                    kPreviousCheckpoint + ", the generation before");
-      ckpt = prev;
-    }
+    // The generation check_resume chose and verified (run_command), if it ran.
+    if (!ctx.checkpoint.empty()) ckpt = ctx.checkpoint;
     const H5In f(ckpt);
     stored0 = f.attr_double("stored_energy_at_start_J");
     const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
@@ -534,7 +493,7 @@ int DemDriver::run(const RunContext& ctx) {
     if (row) write_row(stored0, !extra_row_);
     if (snapshot) write_snapshot(ctx.dir);
     if (checkpoint) {
-      write_checkpoint(ctx.dir, stored0);
+      write_checkpoint(ctx.dir, stored0, last);
       solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
     }
     lap.to(Phase::output);

@@ -108,9 +108,10 @@ class DemDriver {
   void write_row(double stored0, bool regular = true);
   void write_snapshot(const std::string& dir);
   /// Keeps the current checkpoint as the previous generation, writes the new one and verifies
-  /// it (reopened: format, positions and velocities against their checksum).
-  void write_checkpoint(const std::string& dir, double stored0) const;
-  void write_checkpoint_file(const std::string& file, double stored0) const;
+  /// it (reopened: format, every dataset against its checksum: checkpoint_check.hpp). `final`:
+  /// written at run.end_time, which a resume of the finished run then recognises.
+  void write_checkpoint(const std::string& dir, double stored0, bool final = false) const;
+  void write_checkpoint_file(const std::string& file, double stored0, bool final) const;
   /// Throws Diverged (after restoring the signal handlers) if the health hook (the gas) or the
   /// DEM watchdog objects; the gas is asked first, the DEM having been checked at every step.
   void check_health(Progress& progress, double stored0);
@@ -132,6 +133,7 @@ class DemDriver {
   double last_sound_time_ = 0;  // the last output instant that passed every check [s]
   TimeSeries ts_;
   Log* log_ = nullptr;
+  const RunIdentity* identity_ = nullptr;
   RunCostMeter cost_;
 };
 

@@ -2,6 +2,9 @@
 // What the run command needs from a scenario: a banner, the loop, and the output settings. A
 // scenario is built from a config (and validates all of it in its constructor, before any output);
 // it composes solvers and is not a subclass of them.
+#include <array>
+#include <cstdint>
+
 #include "core/log.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/run_context.hpp"
@@ -14,6 +17,9 @@ class Scenario {
   virtual void banner(Log& log) const = 0;
   virtual int run(const RunContext& ctx) = 0;
   virtual const OutputSettings& output() const = 0;
+  /// The gas lattice's interior cells per axis (zeros without gas): recorded in each checkpoint,
+  /// which a resume must match (checkpoint_check.hpp).
+  virtual std::array<std::int64_t, 3> lattice() const { return {0, 0, 0}; }
 };
 
 }  // namespace lbdem::scenarios

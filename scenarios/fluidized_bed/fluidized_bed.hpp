@@ -25,6 +25,7 @@ class FluidizedBedScenario : public Scenario {
   void banner(Log& log) const override;
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
+  std::array<std::int64_t, 3> lattice() const override { return box_.lattice(); }
   BoxScenario& box() { return box_; }
   /// The two outputs at the solvers' current state.
   double bed_height() const;

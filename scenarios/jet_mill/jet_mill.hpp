@@ -33,6 +33,7 @@ class JetMillScenario : public Scenario {
   void banner(Log& log) const override { box_.banner(log); }
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
+  std::array<std::int64_t, 3> lattice() const override { return box_.lattice(); }
   BoxScenario& box() { return box_; }
   const JetMillGeometry& geometry() const { return geometry_; }
   const JetSources& sources() const { return sources_; }

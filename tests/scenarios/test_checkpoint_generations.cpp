@@ -1,6 +1,6 @@
-// Two checkpoint generations (DemDriver): checkpoint.h5 and checkpoint.prev.h5, each verified by a
-// checksum of the positions and velocities; a resume takes the newest that verifies and says
-// which, and refuses with one line when none does.
+// Two checkpoint generations (DemDriver): checkpoint.h5 and checkpoint.prev.h5, each verified by
+// the checksums of its datasets (checkpoint_check.hpp); a resume takes the newest that verifies and
+// says which, and refuses with one line when none does.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -53,7 +53,7 @@ TEST_CASE("a run keeps two checkpoint generations, the newest in checkpoint.h5",
   REQUIRE(cli("run box --out " + out + kSmall).code == 0);
   CHECK(checkpoint_time(out + "/checkpoint.h5") == Approx(0.03).margin(1e-5));
   CHECK(checkpoint_time(out + "/checkpoint.prev.h5") == Approx(0.02).margin(1e-5));
-  CHECK(lbdem::H5In(out + "/checkpoint.prev.h5").has_attr("state_hash", "/dem"));
+  CHECK(lbdem::H5In(out + "/checkpoint.prev.h5").has_checksums());
   for (const auto& e : fs::recursive_directory_iterator(out)) CHECK(e.path().extension() != ".tmp");
   fs::remove_all(out);
 }
@@ -68,8 +68,8 @@ TEST_CASE("a resume takes the newest checkpoint that verifies, says which, or re
   INFO(r.err);
   CHECK(r.code == 0);
   const std::string log = read_text(out + "/log.txt");
-  CHECK(log.find("warning: checkpoint.h5 does not verify (the positions and velocities fail "
-                 "their checksum); resuming from checkpoint.prev.h5") != std::string::npos);
+  CHECK(log.find("warning: checkpoint.h5 does not verify (dataset /dem/x fails its checksum); "
+                 "resuming from checkpoint.prev.h5") != std::string::npos);
   CHECK(log.find("resumed from " + out + "/checkpoint.prev.h5 at t = 0.02") != std::string::npos);
   CHECK(checkpoint_time(out + "/checkpoint.h5") == Approx(0.045).margin(1e-5));
   // Both generations damaged: refused in one line, exit 2.
