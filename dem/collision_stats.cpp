@@ -132,16 +132,33 @@ void CollisionStats::save(H5Out& out, const std::string& g) const {
 }
 
 void CollisionStats::load(const H5In& in, const std::string& g) {
+  // Sizes checked before use: a checkpoint of another run (another output.collisions.grid_cells)
+  // must fail here, not write past the arrays.
+  const auto fits = [&](std::size_t got, std::size_t want, const char* what) {
+    if (got != want)
+      throw std::runtime_error("checkpoint's collision statistics do not fit this run (" +
+                               std::string(what) + ": " + std::to_string(got) + " entries, " +
+                               std::to_string(want) + " expected)");
+  };
   for (int w = 0; w < 2; ++w) {
-    hist_vn_[w] = in.int64s(g + "/hist_vn" + std::to_string(w));
-    hist_vt_[w] = in.int64s(g + "/hist_vt" + std::to_string(w));
+    const auto vn = in.int64s(g + "/hist_vn" + std::to_string(w));
+    const auto vt = in.int64s(g + "/hist_vt" + std::to_string(w));
+    fits(vn.size(), hist_vn_[w].size(), "histogram"),
+        fits(vt.size(), hist_vt_[w].size(), "histogram");
+    hist_vn_[w] = vn, hist_vt_[w] = vt;
   }
   const auto st = in.int64s(g + "/started");
+  fits(st.size(), 3, "counts");
   started_[0] = st[0], started_[1] = st[1], rows_dropped_ = st[2];
   const auto cl = in.doubles(g + "/closed");
+  fits(cl.size(), 4, "closed energies");
   std::copy(cl.begin(), cl.end(), closed_);
-  grid_count_ = in.int64s(g + "/grid_count");
-  grid_energy_ = in.doubles(g + "/grid_energy");
+  const auto count = in.int64s(g + "/grid_count");
+  const auto energy = in.doubles(g + "/grid_energy");
+  fits(count.size(), grid_count_.size(), "grid cells (output.collisions.grid_cells)");
+  fits(energy.size(), grid_energy_.size(), "grid cells (output.collisions.grid_cells)");
+  grid_count_ = count;
+  grid_energy_ = energy;
   const auto rows = in.doubles(g + "/rows");
   rows_.clear();
   for (std::size_t k = 0; k + 9 <= rows.size(); k += 9)

@@ -104,6 +104,28 @@ void DemSolver::save(H5Out& f) const {
   stats_.save(f, "/dem/collisions");
 }
 
+// The loaded particle and pair arrays agree with each other and with this solver's materials: a
+// checkpoint of another run fails here, not in a step that indexes past them.
+void DemSolver::check_loaded() const {
+  const std::size_t n = p_.x.size();
+  for (const std::size_t m :
+       {p_.v.size(), p_.omega.size(), p_.force.size(), p_.torque.size(), p_.external.size(),
+        p_.radius.size(), p_.mass.size(), p_.inertia.size(), p_.material.size(), p_.id.size()})
+    if (m != n)
+      throw std::runtime_error("checkpoint is inconsistent: particle arrays differ in length");
+  for (const auto m : p_.material)
+    if (m < 0 || std::size_t(m) >= materials_.size())
+      throw std::runtime_error("checkpoint does not fit this run: material index " +
+                               std::to_string(m) + ", this run has " +
+                               std::to_string(materials_.size()) + " materials");
+  if (pairs_.j.size() != pairs_.size())
+    throw std::runtime_error("checkpoint is inconsistent: pair arrays differ in length");
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (pairs_.i[k] >= n || pairs_.j[k] >= n)
+      throw std::runtime_error("checkpoint is inconsistent: a contact names a particle past " +
+                               std::to_string(n));
+}
+
 void DemSolver::load(const H5In& f) {
   if (!f.has("/dem") || f.attr_int("layout_version", "/dem") != kCheckpointLayout)
     throw std::runtime_error("checkpoint written by an incompatible lbdem build (layout " +
@@ -143,6 +165,7 @@ void DemSolver::load(const H5In& f) {
       pairs_.state.size() != pi.size())
     throw std::runtime_error("checkpoint is inconsistent: pair arrays differ in length");
   pairs_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_first"));
+  check_loaded();
   pairs_.build_transpose(p_.size());
   const auto wp = f.int64s("/dem/wc_particle");
   wc_.resize(wp.size());
@@ -153,9 +176,15 @@ void DemSolver::load(const H5In& f) {
   unflatten(f.doubles("/dem/wc_tally"), wc_.tally, wc_.record);
   wc_.state = f.uint8s("/dem/wc_state");
   if (wc_.history.size() != wp.size() || wc_.tally.size() != wp.size() ||
-      wc_.state.size() != wp.size())
+      wc_.state.size() != wp.size() || wc_.wall.size() != wp.size() || wc_.tri.size() != wp.size())
     throw std::runtime_error("checkpoint is inconsistent: wall-contact arrays differ in length");
   wc_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/wc_first"));
+  for (std::size_t k = 0; k < wc_.size(); ++k)
+    if (wc_.particle[k] >= p_.size() || wc_.wall[k] >= walls_.size())
+      throw std::runtime_error(
+          "checkpoint does not fit this run: a wall contact names particle " +
+          std::to_string(wc_.particle[k]) + " of " + std::to_string(p_.size()) + " or wall " +
+          std::to_string(wc_.wall[k]) + " of " + std::to_string(walls_.size()));
   wall_ref_.assign(walls_.size(), {});
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const std::string name = "/dem/wall_ref" + std::to_string(w);

@@ -131,6 +131,7 @@ class DemSolver {
   void load(const H5In& in);
 
  private:
+  void check_loaded() const;
   void rebuild();
   void build_wall_list(const CellList& cells, double extra);
   void update_walls();

@@ -249,8 +249,9 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
       std::snprintf(file, sizeof file, "snapshots/%s_%06zu.h5", kind, k);
       if (!fs::exists(dir + "/" + file))
         throw refuse(std::string(file) + " is missing (the checkpoint counts " +
-                         std::to_string(snapshots) + " snapshots, which the resume links into " +
-                         kind + ".h5 and " + kind + ".xdmf again)",
+                         std::to_string(snapshots) + (snapshots == 1 ? " snapshot" : " snapshots") +
+                         ", which the resume links into " + kind + ".h5 and " + kind +
+                         ".xdmf again)",
                      restore);
     }
   return p;
