@@ -309,6 +309,11 @@ const toml::node* Config::find(std::string_view key) const {
   return v.node();
 }
 
+bool Config::is_string(std::string_view key) const {
+  const toml::node* n = find(key);
+  return n && n->is_string();
+}
+
 bool Config::has(std::string_view key) const {
   return find(key) != nullptr;
 }

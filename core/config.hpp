@@ -71,6 +71,8 @@ class Config {
   std::vector<Config> table_array(std::string_view key) const;
 
   bool has(std::string_view key) const;
+  /// Whether the key is given as a string (for a key that takes a number or a word).
+  bool is_string(std::string_view key) const;
 
   double get(std::string_view key, double def, Range r = {}) const;
   double require(std::string_view key, Range r = {}) const;

@@ -22,7 +22,14 @@ class InputError : public std::runtime_error {
   static std::string format(const std::string& key, const std::string& value,
                             const std::string& problem, const std::string& fix) {
     std::string s = "'" + key + "'";
-    if (!value.empty()) s += " = " + value;
+    // A value echoed whole would not be one line: an array of 100,000 numbers given for a vector
+    // is shown by its start and its length (paths and ordinary values fit).
+    constexpr std::size_t kShown = 200;
+    if (value.size() > kShown)
+      s += " = " + value.substr(0, kShown - 40) + " ... (" + std::to_string(value.size()) +
+           " characters)";
+    else if (!value.empty())
+      s += " = " + value;
     s += ": " + problem;
     if (!fix.empty()) s += "; fix: " + fix;
     return s;

@@ -246,7 +246,9 @@ const std::vector<KeyDoc>& key_docs() {
       {"output.snapshot_interval", "s", "time between particle (and gas) snapshots",
        "end_time / 10"},
       {"output.checkpoint_interval", "s",
-       "time between checkpoints; a killed run loses at most this much", "end_time / 4"},
+       "time between checkpoints; a killed run loses at most this much; \"never\": none but at "
+       "the start, the end and a signal stop (warned about)",
+       "end_time / 4"},
       {"output.collisions.rows", "",
        "write one row per contact to collisions.h5 (large: a dense bed makes about 1e8 contacts in "
        "a few hundredths of a second)"},

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -105,6 +106,16 @@ bool read_command_keys(const Config& cfg, const std::string& name) {
                      "the config file is for this scenario, the command names '" + name + "'",
                      "drop the scenario name from the command, or use that scenario's config");
   return cfg.section("run").get_bool("phase_timers", true);
+}
+
+// Whether the run in `dir` got past its start: a checkpoint after t = 0.
+bool simulated_any(const std::string& dir) {
+  if (fs::exists(dir + "/" + kPreviousCheckpoint)) return true;
+  try {
+    return H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem") > 0;
+  } catch (const std::exception&) {
+    return false;  // none, or none readable: nothing past the start was kept
+  }
 }
 
 }  // namespace
@@ -238,6 +249,7 @@ int run_scenario(const RunOptions& opt) {
       return 0;
     }
   }
+  const bool made_dir = !resume && !fs::exists(dir);
   if (!resume) {
     if (fs::exists(dir) && !fs::is_empty(dir))
       throw InputError("--out", dir, "folder exists and is not empty",
@@ -251,6 +263,11 @@ int run_scenario(const RunOptions& opt) {
   log.line("lbdem " + std::string(resume ? "resuming " : "running ") + name + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
   for (const auto& w : point.warnings) log.line(w);
+  if (std::isinf(scenario->output().checkpoint_interval))
+    log.line(
+        "warning: output.checkpoint_interval = \"never\": checkpoints are written only at the "
+        "start, at the end and when Ctrl-C or SIGTERM stops the run; a run killed outright "
+        "(SIGKILL, a lost machine) cannot be resumed");
   scenario->banner(log);
   const RunContext ctx{
       dir, resume, omp_get_max_threads(), &log, !opt.no_plots, point.checkpoint, &identity};
@@ -267,6 +284,23 @@ int run_scenario(const RunOptions& opt) {
     log_phase_times(log, RunClock::now() - t0);
     log_suspension(log, suspended0);
     return 130;
+  } catch (const InputError&) {
+    // An input error that shows only once the run goes (the first neighbour search finds a
+    // periodic box too short) before any time was simulated: the folder holds no result and is
+    // removed, as no folder is made for any other input error. Later, the output stays.
+    if (!resume && !simulated_any(dir)) {
+      std::error_code ec;
+      if (made_dir)
+        fs::remove_all(dir, ec);
+      else {  // an empty folder given by --out stays, empty
+        std::vector<fs::path> made;
+        for (const auto& e : fs::directory_iterator(dir, ec)) made.push_back(e.path());
+        for (const auto& p : made) fs::remove_all(p, ec);
+      }
+      throw;
+    }
+    write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
+    throw;
   } catch (const Diverged&) {
     // The same input diverges again from the kept checkpoint (a resume keeps the physics).
     write_file_atomic(dir + "/status",

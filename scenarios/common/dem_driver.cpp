@@ -36,11 +36,21 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
       out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
   o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10,
                                 Range::positive("give the snapshot interval in s"));
-  // No way to switch checkpoints off: they are what a killed run resumes from.
+  // Periodic checkpoints are what a killed run resumes from: switched off only by name ("never",
+  // which the run command warns about), never by a 0 that may be a slip.
+  if (out.is_string("checkpoint_interval")) {
+    if (const std::string v = out.get_string("checkpoint_interval", ""); v != "never")
+      throw InputError(out.path("checkpoint_interval"), "\"" + v + "\"",
+                       "expected a time in s, or \"never\"",
+                       "give the checkpoint interval in s, e.g. run.end_time / 4 (the default)");
+    o.checkpoint_interval = std::numeric_limits<double>::infinity();
+    return o;
+  }
   o.checkpoint_interval =
       out.get("checkpoint_interval", o.end_time / 4,
               Range::positive("give the checkpoint interval in s, e.g. run.end_time / 4 (the "
-                              "default); a killed run loses at most this much"));
+                              "default); a killed run loses at most this much (\"never\" "
+                              "switches periodic checkpoints off)"));
   return o;
 }
 
@@ -54,7 +64,9 @@ DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hoo
   };
   every_row_ = steps(out_.interval);
   every_snapshot_ = steps(out_.snapshot_interval);
-  every_checkpoint_ = out_.checkpoint_interval > 0 ? steps(out_.checkpoint_interval) : 0;
+  every_checkpoint_ = out_.checkpoint_interval > 0 && std::isfinite(out_.checkpoint_interval)
+                          ? steps(out_.checkpoint_interval)
+                          : 0;
   last_step_ = whole_cycles(std::llround(out_.end_time / dt));
   if (hooks_.watch.on) solver_.set_speed_limit(hooks_.watch.max_speed);
 }

@@ -45,7 +45,8 @@ struct OutputSettings {
   double end_time = 1;             // [s]
   double interval = 1e-2;          // timeseries.csv row interval [s]
   double snapshot_interval = 0.1;  // particle snapshot interval [s]
-  double checkpoint_interval = 0;  // [s], > 0 (and at the end)
+  // [s], > 0; infinite for "never" (then only at the start, the end and a signal stop)
+  double checkpoint_interval = 0;
   static OutputSettings from(const Config& run, const Config& out);
 };
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "core/h5.hpp"
 #include "helpers/cli.hpp"
 
 namespace fs = std::filesystem;
@@ -79,5 +80,59 @@ TEST_CASE("an implausible material value warns in one line and the run goes on",
   CHECK(log.find(w, log.find(w) + 1) == std::string::npos);  // once
   CHECK(log.find("warning: 'materials[0].youngs_modulus'") == std::string::npos);
   CHECK(read_text(out + "/status") == "finished\n");
+  fs::remove_all(out);
+}
+
+TEST_CASE("checkpoints are switched off only by name, with a warning", "[scenarios][input]") {
+  refused("--set output.checkpoint_interval=sometimes", "output.checkpoint_interval");
+  const std::string out = tmpdir("never");
+  const auto r = cli("run box --out " + out + kSmall +
+                     " --set run.end_time=0.02 --set output.checkpoint_interval=never");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(read_text(out + "/log.txt")
+            .find("warning: output.checkpoint_interval = \"never\": checkpoints are written only "
+                  "at the start, at the end") != std::string::npos);
+  // The generation before the end's is the start's: none between.
+  CHECK(lbdem::H5In(out + "/checkpoint.prev.h5").attr_double("time_s", "/dem") == 0);
+  CHECK(lbdem::H5In(out + "/checkpoint.h5").attr_double("time_s", "/dem") ==
+        Approx(0.02).margin(1e-5));
+  fs::remove_all(out);
+}
+
+TEST_CASE("an error's echo of a huge value is cut to one short line", "[scenarios][input]") {
+  std::string big = "[0.0";
+  for (int k = 0; k < 10000; ++k) big += ", 0.0";
+  big += "]";
+  const std::string out = tmpdir("huge_echo");
+  const auto r = cli("run box --out " + out + kSmall + " --set 'physics.gravity=" + big + "'");
+  INFO(r.err.substr(0, 400));
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: 'physics.gravity' = [0, 0", 0) == 0);
+  CHECK(r.err.find("characters)") != std::string::npos);
+  CHECK(r.err.size() < 400);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("an input error found once the run goes leaves no run folder", "[scenarios][input]") {
+  // A gas-only box whose periodic y is one cell thick: the first neighbour search finds it.
+  const std::string out = tmpdir("thin_box");
+  const auto r = cli("run box --config " + std::string(LBDEM_SOURCE_DIR) +
+                     "/scenarios/box/presets/gas_channel.toml --set 'box.hi=[0.016,0.001,0.015]' "
+                     "--set run.end_time=0.1 --out " +
+                     out);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: 'domain' = periodic length 0.001 m", 0) == 0);
+  CHECK_FALSE(fs::exists(out));
+  // An empty folder given as --out stays, empty.
+  fs::create_directories(out);
+  CHECK(cli("run box --config " + std::string(LBDEM_SOURCE_DIR) +
+            "/scenarios/box/presets/gas_channel.toml --set 'box.hi=[0.016,0.001,0.015]' "
+            "--set run.end_time=0.1 --out " +
+            out)
+            .code == 2);
+  CHECK(fs::is_directory(out));
+  CHECK(fs::is_empty(out));
   fs::remove_all(out);
 }
