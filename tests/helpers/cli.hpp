@@ -35,6 +35,13 @@ inline CliResult cli(const std::string& args) {
   return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, err};
 }
 
+/// `--set` arguments that fill the default box with `count` beads near its floor (the box's
+/// preset otherwise): a run of a few ms that the CLI tests resume, stop and refuse.
+inline std::string beads_near_floor(int count) {
+  return " --set fill[0].count=" + std::to_string(count) +
+         " --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'";
+}
+
 /// An empty path under the temp folder, unique per test process.
 inline std::string tmpdir(const std::string& name) {
   namespace fs = std::filesystem;

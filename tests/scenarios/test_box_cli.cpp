@@ -27,9 +27,8 @@ using lbdem::test::tmpdir;
 // A short, small version of the default preset.
 // The beads start near the floor, so the checkpoint falls in the middle of collisions and carries
 // contact history.
-const std::string kSmall =
-    " --set fill[0].count=150 --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'"
-    " --set run.end_time=0.06 --set output.checkpoint_interval=0.03";
+const std::string kSmall = lbdem::test::beads_near_floor(150) +
+                           " --set run.end_time=0.06 --set output.checkpoint_interval=0.03";
 }  // namespace
 
 TEST_CASE("bad input exits with 2, names the key and leaves no run folder", "[scenarios][input]") {

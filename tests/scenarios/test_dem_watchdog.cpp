@@ -24,7 +24,7 @@ using lbdem::test::tmpdir;
 // preset's 2 m/s), which dem.force_dt lets pass: the first contacts throw beads out at ~200 m/s
 // at step 5, against the watchdog's 22 m/s (10 x the free fall across the 0.25 m box).
 const std::string kBlowUp =
-    " --set fill[0].count=150 --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'"
+    lbdem::test::beads_near_floor(150) +
     " --set run.end_time=0.06 --set output.checkpoint_interval=1.0 --set dem.force_dt=true"
     " --set dem.dt=1e-3";
 

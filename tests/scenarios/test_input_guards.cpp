@@ -20,9 +20,7 @@ using lbdem::test::read_text;
 using lbdem::test::tmpdir;
 
 // 150 beads of the default box near its floor, for 2 ms.
-const std::string kSmall =
-    " --set fill[0].count=150 --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'"
-    " --set run.end_time=0.002";
+const std::string kSmall = lbdem::test::beads_near_floor(150) + " --set run.end_time=0.002";
 
 // Runs the box with `args`; checks exit 2, one line naming `key` with a fix, and no run folder.
 void refused(const std::string& args, const std::string& key) {

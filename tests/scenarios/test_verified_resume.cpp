@@ -12,6 +12,7 @@
 
 #include <hdf5.h>
 
+#include "helpers/checkpoint_edit.hpp"
 #include "helpers/cli.hpp"
 
 namespace fs = std::filesystem;
@@ -19,14 +20,14 @@ namespace fs = std::filesystem;
 namespace {
 
 using lbdem::test::cli;
+using lbdem::test::flip_bit;
 using lbdem::test::read_text;
 using lbdem::test::tmpdir;
 
 // 40 beads of the default box near its floor, to 4 ms: checkpoints at 0, 2 and 4 ms (well under a
 // second).
-const std::string kTiny =
-    " --set fill[0].count=40 --set 'fill[0].lo=[0.0,0.0,0.0]' --set 'fill[0].hi=[0.06,0.06,0.03]'"
-    " --set run.end_time=0.004 --set output.checkpoint_interval=0.002";
+const std::string kTiny = lbdem::test::beads_near_floor(40) +
+                          " --set run.end_time=0.004 --set output.checkpoint_interval=0.002";
 
 // Every file below `dir` with its bytes.
 std::map<std::string, std::string> tree(const std::string& dir) {
@@ -48,22 +49,6 @@ std::string finished_run(const std::string& name, const std::string& args = kTin
 }
 
 // Flips one bit of the first value of a double dataset in place, as a disk might.
-void flip_bit(const std::string& file, const std::string& dataset) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  REQUIRE(f >= 0);
-  const hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
-  REQUIRE(d >= 0);
-  const hid_t space = H5Dget_space(d);
-  std::vector<std::uint64_t> v(std::size_t(H5Sget_simple_extent_npoints(space)));
-  REQUIRE(!v.empty());
-  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  v[0] ^= std::uint64_t(1) << 40;
-  H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-}
-
 // The checkpoint as an lbdem from before verified resumes wrote it: no identity (/run), no count
 // of checksummed datasets.
 void strip_identity(const std::string& file) {
