@@ -7,11 +7,16 @@
 #include <variant>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "lbm/d3q19.hpp"
 
 namespace lbdem::scenarios {
 
 namespace {
+
+// [B] a gas lattice's memory per storage cell, halo included, without the coupling's fields
+// (results/bench/size.csv: 222.2 B at 256^3 cells, 228.7 at 128^3).
+constexpr double kGasBytesPerCell = 222;
 
 const char* kAxes[3] = {"x", "y", "z"};
 const std::vector<std::string> kFaceKinds = {"wall",        "free_slip", "periodic",
@@ -237,6 +242,15 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
         cells_along(fluid, a, hi[a] - lo[a], c.dx, box_periodic[std::size_t(a)], offset);
     c.lo[a] -= offset;  // the grid centred on the edge
   }
+  // Before anything is allocated; the coupling's fields add to this lower bound.
+  double storage = 1;
+  for (int n : c.cells) storage *= double(n) + 2;
+  require_memory(storage * kGasBytesPerCell,
+                 "the gas's " + to_text(storage) + " cells (with the halo, at least " +
+                     to_text(kGasBytesPerCell) + " B each)",
+                 fluid.path("dx"), to_text(c.dx),
+                 "choose a larger fluid.dx (twice the cell size is an eighth of the cells) or a "
+                 "smaller box");
 
   const Config faces = fluid.section("faces");
   std::array<bool, 3> periodic{};

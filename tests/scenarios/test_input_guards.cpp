@@ -134,3 +134,36 @@ TEST_CASE("an input error found once the run goes leaves no run folder", "[scena
   CHECK(fs::is_empty(out));
   fs::remove_all(out);
 }
+
+TEST_CASE("a run that cannot fit is refused before it allocates or places anything",
+          "[scenarios][input]") {
+  // Sizes beyond any machine's memory, so that the outcome does not depend on this one's: 10^12
+  // gas cells at 222 B (222 TB) and 10^11 particles at 1 kB (100 TB).
+  const std::string channel =
+      "--config " + std::string(LBDEM_SOURCE_DIR) + "/scenarios/box/presets/gas_channel.toml";
+  const std::string out = tmpdir("too_big");
+  auto r = cli("run box " + channel + " --set 'box.hi=[1,1,1]' --set fluid.dx=1e-4 --out " + out);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: 'fluid.dx' = 0.0001: the gas's 1.0006e+12 cells", 0) == 0);
+  CHECK(r.err.find("222 TB (2.22e+14 B)") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  const std::string huge_box =
+      " --set 'box.hi=[1000,1000,1000]' --set 'fill[0].lo=[0,0,0]' --set "
+      "'fill[0].hi=[1000,1000,1000]'";
+  r = cli("run box --out " + out + " --set fill[0].count=100000000000" + huge_box);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: 'fill[0].count' = 100000000000: at least 1e+11 particles", 0) ==
+        0);
+  CHECK(r.err.find("100 TB (1e+14 B)") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  // A mass is counted in the largest radius: the fewest particles it can mean.
+  r = cli("run box --out " + out + " --set fill[0].count=0 --set fill[0].mass=1e9" + huge_box);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind("lbdem: error: 'fill[0].mass' = 1e+09: at least", 0) == 0);
+  CHECK_FALSE(fs::exists(out));
+  // More particle volume than the region holds: refused at once, not after minutes of tries.
+  refused("--set fill[0].count=100000000", "fill[0].count");
+}
