@@ -63,18 +63,7 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
     return lap.to(Phase::coupling_interpolation_drag);
   }
   report_ = ExchangeReport{};
-  kernel_.locate(p.x);
-  report_.unmapped = kernel_.unmapped_count();
-
-  // Gas fraction, and the gas's intrinsic velocity now for the slip that sets beta_p: the
-  // populations' own momentum over the new eps. It leaves out the half-force shift and the
-  // implicit drag of the last step (a few % of the slip, which moves beta_p only through the
-  // inertial part of the law); what it gains is that it depends on the populations alone, so a
-  // run resumed from a checkpoint takes the same beta_p as one that never stopped. The exchange
-  // itself is exact whatever beta_p is.
-  report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
-  eps_.swap(cell_scalar_);
-  lap.to(Phase::coupling_porosity);
+  map_particles(p, lap);
   // The density for grad p comes from the same pass over the populations.
   if (s_.pressure_gradient)
     gas_.raw_moments(pressure_, cell_vec_);
@@ -115,23 +104,46 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
         });
       },
       s_.drag);
-  double rate = 0, eps_sum = 0;
-  for (std::size_t k = 0; k < np; ++k) {
-    rate = std::max(rate, beta_[k] * steps_ * units_.dt / p.mass[k]);
-    eps_sum += eps_p_[k];
-  }
-  report_.max_particle_rate = rate;
+  double eps_sum = 0;
+  for (std::size_t k = 0; k < np; ++k) eps_sum += eps_p_[k];
   report_.mean_eps_particles = np ? eps_sum / double(np) : 1.0;
-
   // Pressure-gradient force -V_p grad p at the particles.
   if (s_.pressure_gradient) {
 #pragma omp parallel for schedule(static) if (np >= ParticleKernel::kMinParallelParticles)
     for (std::size_t k = 0; k < np; ++k)
       f_grad_[k] = pressure_gradient_force(2 * p.radius[k], f_grad_[k]);
   }
+  apply_to_gas(p, lap);
+}
+
+void Coupler::map_particles(const dem::ParticleArrays& p, PhaseLap& lap) {
+  kernel_.locate(p.x);
+  report_.unmapped = kernel_.unmapped_count();
+
+  // Gas fraction, and the gas's intrinsic velocity now for the slip that sets beta_p: the
+  // populations' own momentum over the new eps. It leaves out the half-force shift and the
+  // implicit drag of the last step (a few % of the slip, which moves beta_p only through the
+  // inertial part of the law); what it gains is that it depends on the populations alone, so a
+  // run resumed from a checkpoint takes the same beta_p as one that never stopped. The exchange
+  // itself is exact whatever beta_p is.
+  report_.porosity = kernel_.gas_fraction(p.radius, s_.eps_min, cell_scalar_);
+  eps_.swap(cell_scalar_);
+  lap.to(Phase::coupling_porosity);
+}
+
+// What the interval's drag coefficients, pressure-gradient forces and particle velocities put into
+// the gas's fields, and the interval's report from them.
+void Coupler::apply_to_gas(const dem::ParticleArrays& p, PhaseLap& lap) {
+  const std::size_t np = p.size();
+  const auto ncell = std::size_t(gas_.grid().cells());
+  const bool many_cells = ncell >= std::size_t(ParticleKernel::kMinParallelCells);
+  double rate = 0;
+  for (std::size_t k = 0; k < np; ++k)
+    rate = std::max(rate, beta_[k] * steps_ * units_.dt / p.mass[k]);
+  report_.max_particle_rate = rate;
   report_.pressure_force = deterministic_sum(
       np, [&](std::size_t k) { return f_grad_[k]; }, Vec3(Vec3::Zero()));
-  u_sum_.assign(cell_vec_.size(), Vec3::Zero());
+  u_sum_.assign(std::size_t(gas_.grid().cells()), Vec3::Zero());
   if (!s_.two_way) return lap.to(Phase::coupling_interpolation_drag);
 
   // The gas side: implicit drag coefficient A_c / eps_c on the superficial velocity and the
@@ -174,6 +186,47 @@ void Coupler::begin_interval(const dem::ParticleArrays& p, int gas_steps) {
   empty_fields_set_ = np == 0;
   if (empty_fields_set_) empty_report_ = report_;
   lap.to(Phase::coupling_interpolation_drag);
+}
+
+IntervalState Coupler::interval_state() const {
+  IntervalState st;
+  st.steps = steps_;
+  st.steps_done = steps_done_;
+  st.beta = beta_;
+  st.f_grad = f_grad_;
+  st.mean_eps = report_.mean_eps_particles;
+  if (s_.two_way)
+    gas_.velocity_sum(st.velocity_sum);
+  else
+    st.velocity_sum = u_sum_;
+  return st;
+}
+
+void Coupler::resume_interval(const dem::ParticleArrays& p, const IntervalState& st) {
+  const auto ncell = std::size_t(gas_.grid().cells());
+  if (!(st.steps >= 1 && st.steps_done >= 0 && st.steps_done <= st.steps) ||
+      st.beta.size() != p.size() || st.f_grad.size() != p.size() || st.velocity_sum.size() != ncell)
+    throw std::invalid_argument(
+        "coupling: an interval's state of " + std::to_string(st.steps_done) + " of " +
+        std::to_string(st.steps) + " steps, " + std::to_string(st.beta.size()) + " particles and " +
+        std::to_string(st.velocity_sum.size()) + " cells does not fit " + std::to_string(p.size()) +
+        " particles and " + std::to_string(ncell) + " cells");
+  PhaseLap lap;
+  steps_ = st.steps;
+  steps_done_ = st.steps_done;
+  report_ = ExchangeReport{};
+  // The particles stand where begin_interval found them (the DEM has not stepped), so the mapping
+  // and everything the gas receives are recomputed to the bit from them and the saved values.
+  map_particles(p, lap);
+  beta_ = st.beta;
+  f_grad_ = st.f_grad;
+  v_p_.assign(p.v.begin(), p.v.end());
+  report_.mean_eps_particles = st.mean_eps;
+  apply_to_gas(p, lap);
+  if (s_.two_way)
+    gas_.set_velocity_sum(st.velocity_sum);
+  else
+    u_sum_ = st.velocity_sum;
 }
 
 void Coupler::set_gas_source(std::vector<Vec3> force) {

@@ -48,6 +48,7 @@
 // velocity as it is, with eps from the kernel for the voidage laws.
 //
 // Units: SI here and at every interface; lattice values only where they are handed to LbmSolver.
+#include "core/phase_timer.hpp"
 #include "coupling/drag/drag_model.hpp"
 #include "coupling/kernel.hpp"
 #include "dem/particles.hpp"
@@ -85,6 +86,18 @@ struct ExchangeReport {
   std::size_t unmapped = 0;            // particles with no gas cell within the kernel
 };
 
+/// An exchange interval stopped part-way, as a checkpoint keeps it (a stop on SIGTERM within the
+/// interval's gas steps): what begin_interval took from the gas at the interval's start, which the
+/// gas no longer holds, and the velocity sums of the steps done.
+struct IntervalState {
+  int steps = 0;                   // gas steps of the interval
+  int steps_done = 0;              // of them run
+  std::vector<double> beta;        // drag coefficients beta_p [kg/s]
+  std::vector<Vec3> f_grad;        // pressure-gradient forces -V_p grad p [N]
+  double mean_eps = 1;             // mean eps at the particles, for the report
+  std::vector<Vec3> velocity_sum;  // sum of u / eps over the steps done, compact [lattice units]
+};
+
 class Coupler {
  public:
   /// frame: the lattice in SI; units: dx, dt, rho_ref of the gas; steps_per_interval: gas steps
@@ -101,6 +114,13 @@ class Coupler {
   void before_gas_step();
   /// Sets p.external to the interval's mean gas force; p must be the arrays begin_interval saw.
   const ExchangeReport& end_interval(dem::ParticleArrays& p);
+  /// Gas steps of the current interval not yet run (0 between intervals).
+  int steps_left() const { return steps_ - steps_done_; }
+  /// The current interval's state, and the interval taken up again from it on the same particles
+  /// and the gas as it stood then: the rest of the interval, and end_interval, then run as they
+  /// would have without the stop (bitwise). std::invalid_argument if the sizes do not fit.
+  IntervalState interval_state() const;
+  void resume_interval(const dem::ParticleArrays& p, const IntervalState& st);
 
   /// A force density the gas feels besides the exchange (compact order, lattice units; e.g. the
   /// jet mill's nozzles): two-way coupling rewrites the gas's force field every interval and adds
@@ -133,6 +153,9 @@ class Coupler {
   bool empty_fields_set_ = false;
   ExchangeReport empty_report_;
   void density_to_pressure(std::vector<double>& p) const;  // in place, lattice density -> [Pa]
+  // begin_interval's parts: the particles' places and eps; the fields the gas receives.
+  void map_particles(const dem::ParticleArrays& p, PhaseLap& lap);
+  void apply_to_gas(const dem::ParticleArrays& p, PhaseLap& lap);
 };
 
 }  // namespace lbdem::coupling

@@ -272,6 +272,30 @@ void LbmSolver::enable_velocity_sum() {
 }
 
 void LbmSolver::take_velocity_sum(std::vector<Vec3>& out) {
+  velocity_sum(out);
+  for (auto& a : u_sum_) {
+    const auto m = a.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t n = 0; n < m; ++n) a[n] = 0.0;
+  }
+}
+
+void LbmSolver::set_velocity_sum(std::span<const Vec3> sum) {
+  const Grid& g = grid();
+  if (sum.size() != std::size_t(g.cells()))
+    throw std::invalid_argument("velocity sum: " + std::to_string(sum.size()) + " values for " +
+                                std::to_string(g.cells()) + " cells");
+  enable_velocity_sum();
+  for_each_row(g, [&](int y, int z) {
+    for (int x = 0; x < g.nx(); ++x) {
+      const auto n = std::size_t(g.index(x, y, z));
+      const Vec3& u = sum[std::size_t(g.compact_index(x, y, z))];
+      for (int a = 0; a < 3; ++a) u_sum_[std::size_t(a)][n] = flags_.fluid(Index(n)) ? u[a] : 0.0;
+    }
+  });
+}
+
+void LbmSolver::velocity_sum(std::vector<Vec3>& out) const {
   const Grid& g = grid();
   out.resize(std::size_t(g.cells()));
   // Row by row on all threads (each entry written once): the exchange calls this on the whole
@@ -285,11 +309,6 @@ void LbmSolver::take_velocity_sum(std::vector<Vec3>& out) {
           take ? Vec3(u_sum_[0][n], u_sum_[1][n], u_sum_[2][n]) : Vec3(Vec3::Zero());
     }
   });
-  for (auto& a : u_sum_) {
-    const auto m = a.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t n = 0; n < m; ++n) a[n] = 0.0;
-  }
 }
 
 void LbmSolver::set_porosity_field(std::span<const double> eps, std::span<const double> alpha) {

@@ -145,6 +145,10 @@ class LbmSolver {
   void enable_velocity_sum();
   bool has_velocity_sum() const { return !u_sum_[0].empty(); }
   void take_velocity_sum(std::vector<Vec3>& out);
+  /// The sums as take_velocity_sum returns them, left running; and sums put back (a checkpoint
+  /// written inside an exchange interval): interior cells in compact order, solid cells ignored.
+  void velocity_sum(std::vector<Vec3>& out) const;
+  void set_velocity_sum(std::span<const Vec3> sum);
   /// Whole fields at once, over interior cells in compact order (Grid::compact_index), as the
   /// coupling exchanges them: eps in (0, 1] and alpha >= 0 (checked; std::invalid_argument naming
   /// the first bad cell), force density [lattice units]. Solid cells are skipped.
