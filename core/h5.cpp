@@ -1,5 +1,6 @@
 #include "core/h5.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -100,6 +101,11 @@ void H5Out::write_array(const std::string& name, const std::vector<double>& v,
   std::vector<hsize_t> d(dims.begin(), dims.end());
   write_raw(name, H5T_NATIVE_DOUBLE, v.data(), static_cast<int>(d.size()), d.data());
 }
+void H5Out::write_array(const std::string& name, const std::vector<std::uint8_t>& v,
+                        const std::vector<std::size_t>& dims) {
+  std::vector<hsize_t> d(dims.begin(), dims.end());
+  write_raw(name, H5T_NATIVE_UINT8, v.data(), static_cast<int>(d.size()), d.data());
+}
 
 void H5Out::attr(const std::string& name, double v, const std::string& object) {
   hid_t space = H5Screate(H5S_SCALAR);
@@ -157,6 +163,18 @@ H5In::~H5In() {
 
 bool H5In::has(const std::string& name) const {
   return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::vector<std::size_t> H5In::dims(const std::string& name) const {
+  hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+  if (set < 0) throw std::runtime_error(path_ + ": no dataset " + name);
+  hid_t space = H5Dget_space(set);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> d(static_cast<std::size_t>(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(space, d.data(), nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  return std::vector<std::size_t>(d.begin(), d.end());
 }
 
 std::size_t H5In::read_raw(const std::string& name, hid_t type, std::vector<char>& out,

@@ -30,6 +30,8 @@ class H5Out {
   /// Row-major array of any rank (last dimension fastest).
   void write_array(const std::string& name, const std::vector<double>& v,
                    const std::vector<std::size_t>& dims);
+  void write_array(const std::string& name, const std::vector<std::uint8_t>& v,
+                   const std::vector<std::size_t>& dims);
   void attr(const std::string& name, double v, const std::string& object = "/");
   void attr(const std::string& name, std::int64_t v, const std::string& object = "/");
   void attr(const std::string& name, const std::string& v, const std::string& object = "/");
@@ -61,6 +63,8 @@ class H5In {
   H5In& operator=(const H5In&) = delete;
 
   bool has(const std::string& name) const;
+  /// A dataset's dimensions, slowest first, without reading it.
+  std::vector<std::size_t> dims(const std::string& name) const;
   std::vector<double> doubles(const std::string& name) const;
   std::vector<Vec3> vec3s(const std::string& name) const;
   std::vector<std::int64_t> int64s(const std::string& name) const;

@@ -227,6 +227,13 @@ std::size_t DemSolver::contacts_pw() const {
       std::count_if(wc_.state.begin(), wc_.state.end(), [](auto s) { return s & kTouching; }));
 }
 
+std::vector<std::int32_t> DemSolver::coordination() const {
+  std::vector<std::int32_t> c(p_.size(), 0);
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (pairs_.state[k] & kTouching) ++c[pairs_.i[k]], ++c[pairs_.j[k]];
+  return c;
+}
+
 EnergyTotals DemSolver::energy() const {
   EnergyTotals e;
   const std::size_t n = p_.size();

@@ -120,6 +120,9 @@ class DemSolver {
   EnergyTotals energy() const;
   std::size_t contacts_pp() const;  // pairs touching now
   std::size_t contacts_pw() const;
+  /// Each particle's coordination number: the particles it touches now (pairs with overlap at the
+  /// last evaluation; walls not counted).
+  std::vector<std::int32_t> coordination() const;
   const CollisionStats& collisions() const { return stats_; }
   CollisionStats& collisions() { return stats_; }
   double interaction_range() const;  // largest distance beyond touch at which the law acts [m]

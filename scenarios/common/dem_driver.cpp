@@ -15,6 +15,7 @@
 #include "core/progress.hpp"
 #include "core/time_series.hpp"
 #include "scenarios/common/checkpoint_check.hpp"
+#include "scenarios/common/xdmf.hpp"
 
 namespace lbdem::scenarios {
 
@@ -353,8 +354,14 @@ void DemDriver::write_snapshot(const std::string& dir) {
     f.write("/velocity_m_per_s", p.v);
     f.write("/angular_velocity_rad_per_s", p.omega);
     f.write("/radius_m", p.radius);
+    f.write("/force_N", p.force);
     f.write("/id", p.id);
     f.write("/material", p.material);
+    f.write("/coordination_number", solver_.coordination());
+    // The XDMF's connectivity (one vertex cell per particle): 0 .. N-1.
+    std::vector<std::int32_t> vertex(p.size());
+    for (std::size_t k = 0; k < vertex.size(); ++k) vertex[k] = static_cast<std::int32_t>(k);
+    f.write("/vertex_index", vertex);
     f.commit();
   }
   snapshot_times_.push_back(solver_.time());
@@ -370,35 +377,7 @@ void DemDriver::write_snapshot(const std::string& dir) {
     master.external_link(link, name, "/");
   }
   master.commit();
-  // ParaView: a temporal collection of polyvertex grids with radius and velocity attributes.
-  std::string x =
-      "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (int k = 0; k <= index; ++k) {
-    std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", k);
-    const H5In in(dir + "/" + name);
-    const std::size_t n = in.doubles("/radius_m").size();
-    const std::string N = std::to_string(n);
-    char t[64];
-    std::snprintf(t, sizeof t, "%.9g", snapshot_times_[k]);
-    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + std::string(t) +
-         "\"/>\n";
-    x += "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\"/>\n";
-    x += "    <Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"" + N +
-         " 3\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name +
-         ":/position_m</DataItem></Geometry>\n";
-    const auto attr = [&](const char* a, const char* ds, bool vec) {
-      x += std::string("    <Attribute Name=\"") + a + "\" AttributeType=\"" +
-           (vec ? "Vector" : "Scalar") + "\" Center=\"Node\"><DataItem Dimensions=\"" + N +
-           (vec ? " 3" : "") + "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + name +
-           ":" + ds + "</DataItem></Attribute>\n";
-    };
-    attr("radius_m", "/radius_m", false);
-    attr("velocity_m_per_s", "/velocity_m_per_s", true);
-    x += "   </Grid>\n";
-  }
-  x += "  </Grid>\n </Domain>\n</Xdmf>\n";
-  write_file_atomic(dir + "/particles.xdmf", x);
+  write_particles_xdmf(dir, snapshot_times_);
 }
 
 void DemDriver::write_checkpoint(const std::string& dir, double stored0, bool final) const {

@@ -8,6 +8,7 @@
 #include "core/deterministic_sum.hpp"
 #include "core/error.hpp"
 #include "lbm/d3q19.hpp"
+#include "scenarios/common/xdmf.hpp"
 
 namespace lbdem::scenarios {
 
@@ -23,12 +24,6 @@ std::string snapshot_name(std::size_t k) {
   char name[64];
   std::snprintf(name, sizeof name, "snapshots/fluid_%06zu.h5", k);
   return name;
-}
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
 }
 
 }  // namespace
@@ -100,6 +95,13 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
   // balance carries; the coupling, which sets eps, decides what it reports.
   for (std::size_t i = 0; i < rho.size(); ++i)
     pressure[i] = rho[i] > 0 ? u.pressure_to_si((rho[i] - 1.0) * lbm::kCs2) : 0.0;
+  // 1 in solid cells (walls, the jet mill's outside of its chamber), 0 in gas cells.
+  const lbm::Grid& g = s.grid();
+  std::vector<std::uint8_t> solid(rho.size(), 0);
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x)
+        if (!s.flags().fluid(g.index(x, y, z))) solid[std::size_t(g.compact_index(x, y, z))] = 1;
   fs::create_directories(dir + "/snapshots");
   {
     H5Out f(dir + "/" + snapshot_name(index));
@@ -107,6 +109,7 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
     f.write_array("/velocity_m_per_s", velocity, {nz, ny, nx, 3});
     f.write_array("/pressure_Pa", pressure, {nz, ny, nx});
     f.write_array("/porosity", porosity, {nz, ny, nx});
+    f.write_array("/solid", solid, {nz, ny, nx});
     for (const SnapshotArray& a : extra) f.write("/" + a.name, a.values);
     f.commit();
   }
@@ -115,6 +118,7 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
   master.write("/time_s", times);
   master.group("/grid");
   master.write("/grid/origin_m", std::vector<double>{origin[0], origin[1], origin[2]});
+  master.write("/grid/lower_corner_m", std::vector<double>{c.lo[0], c.lo[1], c.lo[2]});
   master.write("/grid/spacing_m", std::vector<double>{c.dx, c.dx, c.dx});
   master.write("/grid/cells", std::vector<std::int32_t>{c.cells[0], c.cells[1], c.cells[2]});
   master.attr("pressure_reference_density_kg_m3", c.density);
@@ -125,36 +129,7 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
     master.external_link(link, snapshot_name(k), "/");
   }
   master.commit();
-  // XDMF 3DCoRectMesh: dimensions, origin and spacing are given slowest axis first (z y x); the
-  // mesh's points are the cell centres, so Center="Node".
-  const std::string dims = std::to_string(nz) + " " + std::to_string(ny) + " " + std::to_string(nx);
-  std::string x =
-      "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      "  <Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (std::size_t k = 0; k <= index; ++k) {
-    const std::string file = snapshot_name(k);
-    x += "   <Grid Name=\"step\" GridType=\"Uniform\">\n    <Time Value=\"" + num(times[k]) +
-         "\"/>\n";
-    x += "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" + dims + "\"/>\n";
-    x += "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-         "     <DataItem Dimensions=\"3\" Format=\"XML\" NumberType=\"Float\" Precision=\"8\">" +
-         num(origin[2]) + " " + num(origin[1]) + " " + num(origin[0]) +
-         "</DataItem>\n"
-         "     <DataItem Dimensions=\"3\" Format=\"XML\" NumberType=\"Float\" Precision=\"8\">" +
-         num(c.dx) + " " + num(c.dx) + " " + num(c.dx) + "</DataItem>\n    </Geometry>\n";
-    const auto attr = [&](const char* name, bool vec) {
-      x += std::string("    <Attribute Name=\"") + name + "\" AttributeType=\"" +
-           (vec ? "Vector" : "Scalar") + "\" Center=\"Node\"><DataItem Dimensions=\"" + dims +
-           (vec ? " 3" : "") + "\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\">" + file +
-           ":/" + name + "</DataItem></Attribute>\n";
-    };
-    attr("velocity_m_per_s", true);
-    attr("pressure_Pa", false);
-    attr("porosity", false);
-    x += "   </Grid>\n";
-  }
-  x += "  </Grid>\n </Domain>\n</Xdmf>\n";
-  write_file_atomic(dir + "/fluid.xdmf", x);
+  write_fluid_xdmf(dir, times, GasGrid{c.lo, c.dx, c.cells});
 }
 
 void save_fluid(H5Out& f, const lbm::LbmSolver& s) {

@@ -1,8 +1,9 @@
 #pragma once
 // The gas part of a run folder (docs/user-guide.md), in SI only: snapshots in fluid.h5 + fluid.xdmf
-// (cell centres of a 3DCoRectMesh, at the instants of the particle snapshots), timeseries.csv
-// columns, the populations in checkpoint.h5, and the divergence watchdog. Every file is written
-// atomically (H5Out, write_file_atomic), so a stopped or failed run leaves only whole files.
+// (cell data of a grid covering the lattice, at the instants of the particle snapshots: xdmf.hpp),
+// timeseries.csv columns, the populations in checkpoint.h5, and the divergence watchdog. Every file
+// is written atomically (H5Out, write_file_atomic), so a stopped or failed run leaves only whole
+// files.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -31,10 +32,11 @@ struct SnapshotArray {
 };
 
 /// Writes snapshots/fluid_NNNNNN.h5 for the last entry of `times` (index times.size() - 1) and
-/// rewrites fluid.h5 (time_s, grid, external links to every snapshot) and fluid.xdmf. Datasets,
-/// row-major (z, y, x[, component]): velocity_m_per_s, pressure_Pa (p - p_ref =
-/// (rho - rho_ref) c_s^2), porosity (1: no particles in the gas yet); then `extra`, each under
-/// /name (not in the XDMF, which lists cell fields only).
+/// rewrites fluid.h5 (time_s; /grid: origin_m the first cell's centre, lower_corner_m, spacing_m,
+/// cells; external links to every snapshot) and fluid.xdmf. Datasets, row-major
+/// (z, y, x[, component]): velocity_m_per_s, pressure_Pa (p - p_ref = (rho - rho_ref) c_s^2),
+/// porosity (1: no particles in the gas yet), solid (uint8: 1 in solid cells, 0 in gas); then
+/// `extra`, each under /name (not in the XDMF, which lists cell fields only).
 void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
                           const std::vector<double>& times,
                           const std::vector<SnapshotArray>& extra = {});

@@ -136,9 +136,10 @@ TEST_CASE("gas-only body-force channel gives the plane Poiseuille profile", "[sc
   // The run folder: ParaView file, SI columns, banner numbers.
   const std::string xdmf = read_text(out + "/fluid.xdmf");
   CHECK(xdmf.find("3DCoRectMesh") != std::string::npos);
-  CHECK(xdmf.find("Dimensions=\"15 4 16\"") != std::string::npos);
-  CHECK(xdmf.find(">0.00050000000000000001 0.00050000000000000001 0.00050000000000000001<") !=
-        std::string::npos);  // origin = lo + dx/2
+  // Nodes at the cells' corners from box.lo = 0: one more per axis than the cells (z y x).
+  CHECK(xdmf.find("TopologyType=\"3DCoRectMesh\" Dimensions=\"16 5 17\"") != std::string::npos);
+  CHECK(xdmf.find("Center=\"Cell\"><DataItem Dimensions=\"15 4 16\"") != std::string::npos);
+  CHECK(xdmf.find(">0 0 0<") != std::string::npos);
   const std::string ts = read_text(out + "/timeseries.csv");
   for (const char* col : {"gas_mean_speed_m_s", "gas_kinetic_energy_J", "gas_mass_kg"})
     CHECK(ts.find(col) != std::string::npos);

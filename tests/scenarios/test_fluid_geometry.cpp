@@ -113,21 +113,29 @@ TEST_CASE("Gas grid: a periodic edge must be whole cells and an edge under half 
 }
 
 TEST_CASE("Gas output places the cells of a centred grid in SI", "[scenarios][fluid]") {
-  // fluid.h5's grid and fluid.xdmf's ORIGIN_DXDYDZ give the first cell centre at the grid's
-  // corner + dx/2, not at box.lo + dx/2, so that ParaView lays the gas over the particles.
+  // fluid.h5's grid gives the first cell centre at the grid's corner + dx/2, not at box.lo + dx/2,
+  // and fluid.xdmf's ORIGIN_DXDYDZ the grid's corner, its nodes at the cells' corners, so that
+  // ParaView lays the gas over the particles.
   const FluidConfig f = read_issue_box();
   lbm::LbmSolver gas(f.lattice());
   gas.initialize([](int, int, int, double& rho, Vec3& v) { rho = 1, v = Vec3::Zero(); });
   const std::string dir = test::tmpdir("fluid_geometry_out");
   write_fluid_snapshot(dir, gas, f, {0.0});
-  const Vec3 first = kLo + Vec3(-0.4e-3, 0, 0.4e-3) + Vec3::Constant(1e-3);  // the design
-  const auto origin = H5In(dir + "/fluid.h5").doubles("/grid/origin_m");
+  const Vec3 corner = kLo + Vec3(-0.4e-3, 0, 0.4e-3);  // the design
+  const Vec3 first = corner + Vec3::Constant(1e-3);
+  const H5In grid(dir + "/fluid.h5");
+  const auto origin = grid.doubles("/grid/origin_m"), lower = grid.doubles("/grid/lower_corner_m");
   REQUIRE(origin.size() == 3);
-  for (int a = 0; a < 3; ++a) CHECK(origin[std::size_t(a)] == Approx(first[a]).epsilon(1e-14));
+  REQUIRE(lower.size() == 3);
+  for (int a = 0; a < 3; ++a) {
+    CHECK(origin[std::size_t(a)] == Approx(first[a]).epsilon(1e-14));
+    CHECK(lower[std::size_t(a)] == Approx(corner[a]).epsilon(1e-14));
+  }
   const std::string xdmf = test::read_text(dir + "/fluid.xdmf");
   char want[128];  // z y x, as the writer's %.17g prints them
-  std::snprintf(want, sizeof want, "%.17g %.17g %.17g</DataItem>", origin[2], origin[1], origin[0]);
+  std::snprintf(want, sizeof want, "%.17g %.17g %.17g</DataItem>", lower[2], lower[1], lower[0]);
   CHECK(xdmf.find(want) != std::string::npos);
-  CHECK(xdmf.find("Dimensions=\"62 5 22\"") != std::string::npos);
+  CHECK(xdmf.find("Dimensions=\"63 6 23\"") != std::string::npos);  // nodes
+  CHECK(xdmf.find("Dimensions=\"62 5 22\"") != std::string::npos);  // cells
   std::filesystem::remove_all(dir);
 }
