@@ -358,10 +358,16 @@ void BoxScenario::advance_gas(dem::DemSolver& s) {
       gas_->set_wall_velocity(gas_->face_body(f), [lu](const Vec3&) { return lu; });
     }
   };
+  // A stop (SIGINT, SIGTERM) is taken between gas steps, where an exchange interval or a DEM step
+  // holds thousands of them: the driver then checkpoints the gas part-way (with the interval's
+  // state) and the DEM where it stands, and a resume runs the rest.
   if (coupler_) {
-    if (s.steps() % interval_.dem_steps != 0) return;
-    coupler_->begin_interval(s.particles(), interval_.gas_steps);
-    for (int k = 0; k < interval_.gas_steps; ++k) {
+    if (coupler_->steps_left() == 0) {  // else an interval resumed part-way
+      if (s.steps() % interval_.dem_steps != 0) return;
+      coupler_->begin_interval(s.particles(), interval_.gas_steps);
+    }
+    while (coupler_->steps_left() > 0) {
+      if (stop_requested()) return;
       ramp();
       coupler_->before_gas_step();
       gas_->step();
@@ -369,10 +375,25 @@ void BoxScenario::advance_gas(dem::DemSolver& s) {
     report_ = coupler_->end_interval(s.particles());
     return;
   }
-  for (int k = sub_.gas_steps_before(s.steps()); k > 0; --k) {
+  const std::int64_t due = gas_steps_due(s.steps() + 1);
+  while (gas_->steps() < due) {
+    if (stop_requested()) return;
     ramp();
     gas_->step();
   }
+}
+
+std::int64_t BoxScenario::gas_steps_due(std::int64_t n) const {
+  // The gas leads: by whole exchange intervals when coupled, else by the DEM step it holds.
+  const std::int64_t m = sub_.dem_per_gas, k = interval_.dem_steps;
+  return coupler_ ? (n + k - 1) / k * interval_.gas_steps
+         : m > 1  ? (n + m - 1) / m
+                  : n * sub_.gas_per_dem;
+}
+
+bool BoxScenario::gas_behind(const dem::DemSolver& s) const {
+  if (!gas_) return false;
+  return coupler_ ? coupler_->steps_left() > 0 : gas_->steps() < gas_steps_due(s.steps() + 1);
 }
 
 void BoxScenario::before_step(dem::DemSolver& s) {
@@ -495,6 +516,7 @@ int BoxScenario::run(const RunContext& ctx) {
                     "); clipped there. A wider coupling.kernel_width smooths the bed");
     }
   };
+  hooks.unfinished = [this](const dem::DemSolver& s) { return gas_behind(s); };
   hooks.extra_columns = columns();
   hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
   hooks.save = [this](H5Out& f) {
@@ -503,6 +525,16 @@ int BoxScenario::run(const RunContext& ctx) {
     f.attr("rng_state", os.str());
     f.attr("inflow_inserted_kg", inflow_.inserted);
     if (gas_) save_fluid(f, *gas_);
+    if (coupler_ && coupler_->steps_left() > 0) {  // stopped inside an interval's gas steps
+      const coupling::IntervalState st = coupler_->interval_state();
+      f.group("/coupling_interval");
+      f.attr("steps", std::int64_t(st.steps), "/coupling_interval");
+      f.attr("steps_done", std::int64_t(st.steps_done), "/coupling_interval");
+      f.attr("mean_eps", st.mean_eps, "/coupling_interval");
+      f.write("/coupling_interval/beta", st.beta);
+      f.write("/coupling_interval/f_grad", st.f_grad);
+      f.write("/coupling_interval/velocity_sum", st.velocity_sum);
+    }
   };
   hooks.load = [this](const H5In& f) {
     std::istringstream is(f.attr_string("rng_state"));
@@ -510,20 +542,34 @@ int BoxScenario::run(const RunContext& ctx) {
     inflow_.inserted = f.attr_double("inflow_inserted_kg");
     if (gas_) {
       load_fluid(f, *gas_);
-      // The gas leads by design (SubCycle; coupled: by whole exchange intervals); any other count
-      // means a different time step. A coupled checkpoint inside an interval (written by a stop
-      // before stops waited for the interval's end) resumes too: the gas has run the interval and
-      // the particles hold its force (ParticleArrays::external, checkpointed); only a row at that
-      // interval's end would miss its exchange report (drag columns), which is not kept.
-      const std::int64_t n = solver_->steps(), m = sub_.dem_per_gas;
-      const std::int64_t k = interval_.dem_steps;
-      const std::int64_t expected = coupler_ ? (n + k - 1) / k * interval_.gas_steps
-                                    : m > 1  ? (n + m - 1) / m
-                                             : n * sub_.gas_per_dem;
-      if (gas_->steps() != expected)
-        throw std::runtime_error("checkpoint: " + std::to_string(gas_->steps()) +
-                                 " gas steps at DEM step " + std::to_string(n) + ", expected " +
-                                 std::to_string(expected));
+      // The gas leads by design (gas_steps_due); any other count means a different time step. A
+      // coupled checkpoint at a DEM step inside an interval resumes too: the gas has run the
+      // interval and the particles hold its force (ParticleArrays::external, checkpointed); only
+      // a row at that interval's end would miss its exchange report (drag columns), which is not
+      // kept. A stop between gas steps leaves the gas part of the way to the next DEM step's
+      // count, and a coupled one the interval's state.
+      const std::int64_t n = solver_->steps(), due = gas_steps_due(n), g = gas_->steps();
+      const auto wrong = [&](const std::string& expected) {
+        return std::runtime_error("checkpoint: " + std::to_string(g) + " gas steps at DEM step " +
+                                  std::to_string(n) + ", expected " + expected);
+      };
+      if (f.has("/coupling_interval")) {
+        coupling::IntervalState st;
+        st.steps = int(f.attr_int("steps", "/coupling_interval"));
+        st.steps_done = int(f.attr_int("steps_done", "/coupling_interval"));
+        st.mean_eps = f.attr_double("mean_eps", "/coupling_interval");
+        st.beta = f.doubles("/coupling_interval/beta");
+        st.f_grad = f.vec3s("/coupling_interval/f_grad");
+        st.velocity_sum = f.vec3s("/coupling_interval/velocity_sum");
+        if (!coupler_ || n % interval_.dem_steps != 0 || st.steps != interval_.gas_steps ||
+            g != due + st.steps_done)
+          throw wrong(std::to_string(due) + " and an interval of " +
+                      std::to_string(interval_.gas_steps) + " gas steps (the checkpoint's: " +
+                      std::to_string(st.steps_done) + " of " + std::to_string(st.steps) + ")");
+        coupler_->resume_interval(solver_->particles(), st);
+      } else if (g != due && !(!coupler_ && g > due && g < gas_steps_due(n + 1))) {
+        throw wrong(std::to_string(due));
+      }
     }
   };
   if (gas_) {

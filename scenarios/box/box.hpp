@@ -47,8 +47,14 @@ class BoxScenario : public Scenario {
   const FluidConfig& fluid() const { return fluid_; }
   const SubCycle& sub_cycle() const { return sub_; }
   /// Advances the gas by the steps that come before DEM step s.steps() (SubCycle), or, coupled,
-  /// runs the exchange interval that starts there.
+  /// runs the exchange interval that starts there; returns early, between gas steps, when a stop
+  /// was asked for (stop_requested), leaving gas_behind() true.
   void advance_gas(dem::DemSolver& s);
+  /// Gas steps done when the DEM stands at step n (the gas leads: by whole exchange intervals when
+  /// coupled, else by the DEM step it holds).
+  std::int64_t gas_steps_due(std::int64_t n) const;
+  /// The gas stopped short of the steps the coming DEM step needs (a stop between gas steps).
+  bool gas_behind(const dem::DemSolver& s) const;
   /// The exchange, or null without [coupling].
   coupling::Coupler* coupler() { return coupler_.get(); }
   const coupling::ExchangeReport& exchange_report() const { return report_; }

@@ -30,6 +30,10 @@ extern "C" void on_stop_signal(int sig) {
 }
 }  // namespace
 
+bool stop_requested() {
+  return g_stop_signal != 0;
+}
+
 OutputSettings OutputSettings::from(const Config& run, const Config& out) {
   OutputSettings o;
   o.end_time = run.require("end_time", Range::positive("give the simulated end time in seconds"));
@@ -456,7 +460,13 @@ int DemDriver::run(const RunContext& ctx) {
   // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
   const std::int64_t cycle = std::max<std::int64_t>(1, hooks_.cycle);
   while (solver_.steps() < last_step_) {
-    if (g_stop_signal && solver_.steps() % cycle == 0) {
+    // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (unfinished).
+    bool stop = g_stop_signal && solver_.steps() % cycle == 0;
+    if (!stop) {
+      if (hooks_.before_step) hooks_.before_step(solver_);
+      stop = g_stop_signal && hooks_.unfinished && hooks_.unfinished(solver_);
+    }
+    if (stop) {
       extra_row_ = extra_snapshot_ = false;
       check_health(progress, stored0);
       write_checkpoint(ctx.dir, stored0);
@@ -467,7 +477,6 @@ int DemDriver::run(const RunContext& ctx) {
       throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) +
                         " at t = " + to_text(solver_.time()) + " s; checkpoint written");
     }
-    if (hooks_.before_step) hooks_.before_step(solver_);
     solver_.step();
     if (solver_.alarm()) dem_alarm(progress);
     work += double(solver_.particles().size());

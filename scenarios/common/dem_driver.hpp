@@ -30,6 +30,11 @@ struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// SIGINT or SIGTERM arrived during DemDriver::run: work that holds many steps inside one DEM
+/// step (the gas of an exchange interval) returns early, between its steps, and says so through
+/// DriverHooks::unfinished, so that a stop waits at most about one such step.
+bool stop_requested();
+
 /// Thrown when the health hook found a diverged state; nothing of that state was written (the
 /// last output and checkpoint stay). lbdem-cli exits with kDivergedExit.
 struct Diverged : std::runtime_error {
@@ -81,7 +86,10 @@ DemWatch dem_watch(const StepChoice& step, const dem::DemSolver& s,
 /// Scenario-specific parts of the loop.
 struct DriverHooks {
   std::function<void(dem::DemSolver&)> before_step;  // inflow, outlet, motion, ...
-  std::vector<std::string> extra_columns;            // extra timeseries.csv columns (SI)
+  /// True when before_step returned early on a stop (stop_requested) with work of the coming DEM
+  /// step left: the loop then checkpoints there, and the scenario's save and load carry the rest.
+  std::function<bool(const dem::DemSolver&)> unfinished;
+  std::vector<std::string> extra_columns;  // extra timeseries.csv columns (SI)
   std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
   std::function<void(H5Out&)> save;  // scenario state into the checkpoint
   std::function<void(const H5In&)> load;

@@ -150,26 +150,30 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   fs::remove_all(part);
 }
 
+namespace {
+
+// Runs lbdem-cli ARGS in the background and sends it SIGTERM after `seconds`: true when it then
+// exited with 130 and left status "stopped".
+bool terminated_after(const std::string& args, double seconds) {
+  const std::string cmd = std::string(LBDEM_CLI) + " " + args +
+                          " --no-plots > /dev/null 2>&1 & pid=$!; sleep " +
+                          std::to_string(seconds) + "; kill -TERM $pid; wait $pid; exit $?";
+  const int rc = std::system(cmd.c_str());  // /bin/sh: background job, signal, wait for its status
+  const std::string dir = args.substr(args.find("--out ") + 6);
+  const std::string status = read_text(dir.substr(0, dir.find(' ')) + "/status");
+  INFO("exit " << (WIFEXITED(rc) ? WEXITSTATUS(rc) : -1) << ", status: " << status);
+  return WIFEXITED(rc) && WEXITSTATUS(rc) == 130 && status.rfind("stopped", 0) == 0;
+}
+
+}  // namespace
+
 TEST_CASE("SIGTERM writes a checkpoint and the resumed run equals an uninterrupted one",
           "[scenarios][checkpoint][slow]") {
   const std::string full = tmpdir("sig_full"), part = tmpdir("sig_part");
   // Long enough (about 2 s) that the signal after 0.5 s lands in the middle of the run.
   const std::string args = kSmall + " --set run.end_time=0.6 --set output.checkpoint_interval=0.6";
   REQUIRE(cli("run box --out " + full + args).code == 0);
-  const std::string cmd =
-      std::string(LBDEM_CLI) + " run box --out " + part + args +
-      " --no-plots > /dev/null 2>&1 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; exit $?";
-  const int rc = std::system(cmd.c_str());  // /bin/sh: background job, signal, wait for its status
-  const lbdem::test::CliResult r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ""};
-  std::string status;
-  if (FILE* f = std::fopen((part + "/status").c_str(), "r")) {
-    char buf[256] = {};
-    status = std::fgets(buf, sizeof buf, f) ? buf : "";
-    std::fclose(f);
-  }
-  INFO(r.err << " status: " << status);
-  REQUIRE(r.code == 130);
-  REQUIRE(status.rfind("stopped", 0) == 0);
+  REQUIRE(terminated_after("run box --out " + part + args, 0.5));
   REQUIRE(cli("run --resume " + part).code == 0);
   lbdem::test::check_same_runs(full, part, {"/dem/x", "/dem/v", "/dem/omega"}, false);
   fs::remove_all(full);
@@ -207,4 +211,34 @@ TEST_CASE("a run suspended with SIGTSTP leaves the suspension out of its wall ti
   CHECK(cost->wall_s > 0);
   CHECK(cost->wall_s + held <= elapsed);
   fs::remove_all(dir);
+}
+
+TEST_CASE("SIGTERM inside a long exchange interval stops between gas steps and resumes bitwise",
+          "[scenarios][checkpoint][slow]") {
+  // A small walled bed whose one exchange interval holds 30,000 gas steps (about 1.5 s of wall
+  // time): before stops were taken between gas steps, a stop waited for the interval's end.
+  const std::string full = tmpdir("gas_sig_full"), part = tmpdir("gas_sig_part");
+  const std::string args =
+      " --config " + std::string(LBDEM_SOURCE_DIR) +
+      "/scenarios/fluidized_bed/presets/mueller_u09.toml --set 'box.hi=[0.02,0.01,0.04]' --set "
+      "'fill[0].hi=[0.02,0.01,0.03]' --set 'bed.pressure_taps=[0.0,0.04]' --set "
+      "fill[0].mass=1e-4 --set coupling.exchange_every=30000 --set run.end_time=0.001 --set "
+      "output.checkpoint_interval=0.001";
+  REQUIRE(cli("run fluidized_bed --out " + full + args).code == 0);
+  REQUIRE(terminated_after("run fluidized_bed --out " + part + args, 0.5));
+  {
+    // The stop came inside the interval: the checkpoint holds the gas part-way and the interval's
+    // state, the DEM at its start.
+    const lbdem::H5In f(part + "/checkpoint.h5");
+    REQUIRE(f.has("/coupling_interval"));
+    const auto done = f.attr_int("steps_done", "/coupling_interval");
+    CHECK(done > 0);
+    CHECK(done < f.attr_int("steps", "/coupling_interval"));
+    CHECK(f.attr_int("steps", "/fluid") == done);
+  }
+  REQUIRE(cli("run --resume " + part).code == 0);
+  lbdem::test::check_same_runs(full, part,
+                               {"/dem/x", "/dem/v", "/dem/omega", "/fluid/populations"});
+  fs::remove_all(full);
+  fs::remove_all(part);
 }
