@@ -8,6 +8,26 @@
 
 namespace lbdem {
 
+/// A file that could not be written, with the operating system's reason: "cannot write PATH: No
+/// space left on device". write_error() builds it from errno.
+class WriteError : public std::runtime_error {
+ public:
+  WriteError(std::string path, std::string reason, bool disk_full)
+      : std::runtime_error("cannot write " + path + ": " + reason),
+        path_(std::move(path)),
+        disk_full_(disk_full) {}
+  const std::string& path() const { return path_; }
+  bool disk_full() const { return disk_full_; }
+
+ private:
+  std::string path_;
+  bool disk_full_;
+};
+
+/// The WriteError for `path` from an errno captured right after the failing call; where the
+/// library that failed left errno 0 (HDF5 may), a file system with no blocks left counts as full.
+WriteError write_error(const std::string& path, int err);
+
 class InputError : public std::runtime_error {
  public:
   InputError(std::string key, std::string value, std::string problem, std::string fix)

@@ -1,10 +1,16 @@
 #include "core/h5.hpp"
 
 #include <algorithm>
+#include <sys/statvfs.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+
+#include "core/error.hpp"
 
 namespace lbdem {
 
@@ -13,15 +19,28 @@ void check(herr_t rc, const std::string& what) {
   if (rc < 0) throw std::runtime_error("HDF5: " + what + " failed");
 }
 void rename_into_place(const std::string& tmp, const std::string& path) {
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp.c_str());
+    throw write_error(path, err);
+  }
 }
 }  // namespace
 
+WriteError write_error(const std::string& path, int err) {
+  if (err == 0) {
+    const auto dir = std::filesystem::path(path).parent_path();
+    struct statvfs fs {};
+    err = statvfs(dir.empty() ? "." : dir.c_str(), &fs) == 0 && fs.f_bavail == 0 ? ENOSPC : EIO;
+  }
+  return WriteError(path, std::strerror(err), err == ENOSPC || err == EDQUOT);
+}
+
 H5Out::H5Out(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  errno = 0;
   file_ = H5Fcreate(tmp_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("cannot create " + tmp_);
+  if (file_ < 0) throw write_error(tmp_, errno);
 }
 
 H5Out::~H5Out() {
@@ -47,7 +66,13 @@ void H5Out::write_raw(const std::string& name, hid_t type, const void* data, int
   }
   bool empty = false;
   for (int r = 0; r < rank; ++r) empty = empty || dims[r] == 0;
-  if (!empty) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + name);
+  errno = 0;
+  if (!empty && H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+    const int err = errno;
+    H5Dclose(set);
+    H5Sclose(space);
+    throw write_error(tmp_ + " (" + name + ")", err);
+  }
   if (checksums_) {
     std::size_t bytes = H5Tget_size(type);
     for (int r = 0; r < rank; ++r) bytes *= dims[r];
@@ -147,8 +172,16 @@ void H5Out::external_link(const std::string& name, const std::string& file,
 
 void H5Out::commit() {
   if (checksums_) attr(kChecksumCountAttr, checksummed_);
-  check(H5Fclose(file_), "close " + tmp_);
+  // The file is flushed here: a full disk shows now. The handle is gone either way (closing it
+  // again would crash HDF5), and so is the half-written temp file.
+  errno = 0;
+  const herr_t rc = H5Fclose(file_);
+  const int err = errno;
   file_ = -1;
+  if (rc < 0) {
+    std::remove(tmp_.c_str());
+    throw write_error(tmp_, err);
+  }
   rename_into_place(tmp_, path_);
 }
 
@@ -320,11 +353,18 @@ std::uint64_t checksum64(const void* data, std::size_t bytes) {
 void write_file_atomic(const std::string& path, const std::string& content) {
   const std::string tmp = path + ".tmp";
   {
+    errno = 0;
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-    f << content;
-    f.flush();
-    if (!f) throw std::runtime_error("cannot write " + tmp);
+    if (f) {
+      f << content;
+      f.flush();
+    }
+    if (!f) {
+      const int err = errno;
+      f.close();
+      std::remove(tmp.c_str());
+      throw write_error(tmp, err);
+    }
   }
   rename_into_place(tmp, path);
 }

@@ -1,9 +1,11 @@
 #include "core/time_series.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/h5.hpp"
 
 namespace lbdem {
@@ -13,6 +15,7 @@ void TimeSeries::open(const std::string& path, const std::vector<std::string>& c
   std::string header;
   for (std::size_t i = 0; i < columns.size(); ++i) header += (i ? "," : "") + columns[i];
   ncol_ = columns.size();
+  path_ = path;
   if (rows_to_keep >= 0) {
     std::ifstream in(path);
     std::string line, kept;
@@ -31,8 +34,8 @@ void TimeSeries::open(const std::string& path, const std::vector<std::string>& c
     f_ << header << '\n';
     rows_ = 0;
   }
-  if (!f_) throw std::runtime_error("cannot write " + path);
   f_.flush();
+  if (!f_) throw write_error(path, errno);
 }
 
 void TimeSeries::row(const std::vector<double>& values) {
@@ -44,7 +47,9 @@ void TimeSeries::row(const std::vector<double>& values) {
     f_ << buf;
   }
   f_ << '\n';
+  errno = 0;
   f_.flush();
+  if (!f_) throw write_error(path_, errno);
   ++rows_;
 }
 

@@ -17,6 +17,7 @@ class TimeSeries {
 
  private:
   std::ofstream f_;
+  std::string path_;
   std::size_t ncol_ = 0;
   long rows_ = 0;
 };

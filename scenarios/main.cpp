@@ -1,5 +1,7 @@
 // lbdem-cli: parse the command line (CLI11), read the TOML, build the scenario, run it.
 #include <CLI/CLI.hpp>
+#include <hdf5.h>
+
 #include <iostream>
 
 #include "core/error.hpp"
@@ -8,6 +10,9 @@
 
 int main(int argc, char** argv) {
   using namespace lbdem::scenarios;
+  // Every file is closed by its owner before exit. HDF5's own clean-up at exit would close again a
+  // file whose close failed (a full disk) and crash after the error was reported.
+  H5dont_atexit();
   CLI::App app{"lbdem: coarse-grained CFD-DEM (lattice Boltzmann gas + OpenMP DEM)"};
   app.require_subcommand(1);
   RunOptions opt;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -32,6 +33,17 @@ namespace lbdem::scenarios {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The status after a failure, written whatever the failure left: atomically if that works, else
+// in place (on a full disk the old status's own block is what there is), else not at all (the
+// error on stderr says it).
+void write_status(const std::string& dir, const std::string& text) {
+  try {
+    write_file_atomic(dir + "/status", text);
+  } catch (const std::exception&) {
+    std::ofstream(dir + "/status", std::ios::trunc) << text;
+  }
+}
 
 struct ScenarioEntry {
   std::string name, description, preset;
@@ -279,7 +291,7 @@ int run_scenario(const RunOptions& opt) {
   try {
     rc = scenario->run(ctx);
   } catch (const Interrupted& e) {
-    write_file_atomic(dir + "/status", "stopped (resume with ./lbdem run --resume " + dir + ")\n");
+    write_status(dir, "stopped (resume with ./lbdem run --resume " + dir + ")\n");
     log.line(std::string(e.what()) + "; resume with ./lbdem run --resume " + dir);
     log_phase_times(log, RunClock::now() - t0);
     log_suspension(log, suspended0);
@@ -299,16 +311,24 @@ int run_scenario(const RunOptions& opt) {
       }
       throw;
     }
-    write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
+    write_status(dir, "failed (resume with ./lbdem run --resume " + dir + ")\n");
+    throw;
+  } catch (const WriteError& e) {
+    const bool resumable = fs::exists(dir + "/checkpoint.h5");
+    write_status(dir, std::string("failed (") + (e.disk_full() ? "disk full: " : "") + e.what() +
+                          (resumable ? "; free space and resume with ./lbdem run --resume " + dir
+                                     : std::string("; no checkpoint was written: free space and "
+                                                   "start the run again")) +
+                          ")\n");
     throw;
   } catch (const Diverged&) {
     // The same input diverges again from the kept checkpoint (a resume keeps the physics).
-    write_file_atomic(dir + "/status",
-                      "failed (diverged; the last checkpoint is from before; log.txt names the "
-                      "fix, for a new run)\n");
+    write_status(dir,
+                 "failed (diverged; the last checkpoint is from before; log.txt names the fix, "
+                 "for a new run)\n");
     throw;
   } catch (...) {
-    write_file_atomic(dir + "/status", "failed (resume with ./lbdem run --resume " + dir + ")\n");
+    write_status(dir, "failed (resume with ./lbdem run --resume " + dir + ")\n");
     throw;
   }
   const double wall = std::chrono::duration<double>(RunClock::now() - t0).count();
