@@ -127,15 +127,17 @@ RheometerScenario::RheometerScenario(const Config& cfg) {
   }
 
   // Powder on a jittered simple-cubic lattice (spacing 2.2 r_max, jitter 0.09 r_max per axis, so
-  // no two overlap), clear of the impeller, layer by layer from the floor until the mass is
-  // reached; it then settles under gravity before the impeller starts.
+  // no two overlap), clear of the impeller, the cup and the floor (the lowest layer's centres at
+  // 1.05 r_max or higher: an overlap there would release its spring energy, which the energy
+  // balance never saw put in), layer by layer from the floor until the mass is reached; it then
+  // settles under gravity before the impeller starts.
   std::mt19937_64 rng(static_cast<std::uint64_t>(run.get_int("seed", 1, Range::non_negative())));
   const double a = 2.2 * r_max, jitter = 0.09 * r_max;
   const int nxy = static_cast<int>(std::floor(2 * (g.cup_radius - r_max) / a));
   std::vector<std::pair<Vec3, double>> placed;
   const double rho = mats[mat].density;
   for (int iz = 0; placed_mass_ < fill_mass_; ++iz) {
-    const double z = r_max * 1.05 + iz * a;
+    const double z = r_max * 1.05 + jitter + iz * a;
     if (z + r_max > g.cup_height)
       throw InputError(rc.path("fill_mass"), to_text(fill_mass_),
                        "the powder does not fit in the cup as placed (" + to_text(placed_mass_) +
