@@ -4,7 +4,9 @@
 usage: /usr/bin/python3 tools/collision_summary.py RUN_DIR
 
 Reads the groups /histograms, /totals, /rows and /grid, each optional. /grid arrays are taken as
-indexed (x, y, z) unless the group has an attribute axis_order = "zyx". Exit 0 on success or when
+indexed (x, y, z) unless the group has an attribute axis_order = "zyx". The map of where energy was
+dissipated sums the grid over its axis with the fewest cells (the grid's cubic cells put
+output.collisions.grid_cells along the box's longest edge, so a tall box is seen from the side). Exit 0 on success or when
 there is no collisions.h5, 1 when the file cannot be read, 2 when RUN_DIR is missing.
 """
 import os
@@ -17,6 +19,7 @@ import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 MECHANISMS = [("dissipated_normal_damping_J", "normal damping"),
               ("dissipated_tangential_damping_J", "tangential damping"),
@@ -129,7 +132,8 @@ def summarise(f, hists, name):
     dg = array(g, "dissipated_J")
     if dg is not None:
         cg = array(g, "counts")
-        lines.append(f"  grid: {'x'.join(map(str, dg.shape))} cells, dissipated {dg.sum():.4g} J"
+        lines.append(f"  grid: {'x'.join(map(str, grid_xyz(g).shape))} cells (x, y, z), dissipated "
+                     f"{dg.sum():.4g} J"
                      + (f", {cg.sum():.0f} contacts" if cg is not None else ""))
     print("\n".join(lines))
 
@@ -155,28 +159,62 @@ def draw_hist(ax, edges, counts, kind):
     ax.legend(fontsize=8, loc="best")
 
 
-def draw_grid(fig, ax, g):
+def grid_xyz(g):
+    """The /grid's dissipated_J indexed (x, y, z), whatever order it was written in."""
     d = array(g, "dissipated_J")
     order = g.attrs.get("axis_order", "xyz")
     order = order.decode() if isinstance(order, bytes) else str(order)
-    if order == "zyx":
-        d = d.transpose(2, 1, 0)
-    xy = d.sum(axis=2)  # (x, y)
-    lo, hi = vector3(g, "lo_m"), vector3(g, "hi_m")
-    extent = [lo[0], hi[0], lo[1], hi[1]] if lo is not None and hi is not None else None
-    pos = xy[xy > 0]
+    return d.transpose(2, 1, 0) if order == "zyx" and d.ndim == 3 else d
+
+
+def projection_axis(shape):
+    """The axis the map sums over: the one with the fewest cells, z first among equals (a top view).
+    The solver makes the grid's cells cubes of (longest box edge) / output.collisions.grid_cells, so
+    the longest edge holds grid_cells of them and a tall box only a few across: a map summed over
+    the long axis would show those few."""
+    return min((2, 1, 0), key=lambda a: shape[a])
+
+
+def project(d, lo=None, hi=None):
+    """(2-D map indexed (first kept axis, second kept axis), the kept axes' names, the summed
+    axis' name, extent [a_lo, a_hi, b_lo, b_hi] in m or None)."""
+    a = projection_axis(d.shape)
+    keep = [k for k in range(3) if k != a]
+    extent = ([lo[keep[0]], hi[keep[0]], lo[keep[1]], hi[keep[1]]]
+              if lo is not None and hi is not None else None)
+    return d.sum(axis=a), ["xyz"[k] for k in keep], "xyz"[a], extent
+
+
+def configured_grid_cells(run):
+    """output.collisions.grid_cells from the run's config.toml, or None."""
+    try:
+        import tomllib
+        with open(os.path.join(run, "config.toml"), "rb") as f:
+            v = tomllib.load(f).get("output", {}).get("collisions", {}).get("grid_cells")
+        return int(v) if isinstance(v, int) else None
+    except (ImportError, OSError, ValueError):
+        return None
+
+
+def draw_grid(fig, ax, g, grid_cells=None):
+    d = grid_xyz(g)
+    m, (na, nb), summed, extent = project(d, vector3(g, "lo_m"), vector3(g, "hi_m"))
+    pos = m[m > 0]
     # Log colours for a wide range, floored at 1e-6 of the peak so that near-empty cells do not
     # squeeze the hot spots into one colour.
     norm = (LogNorm(max(pos.min(), 1e-6 * pos.max()), pos.max())
             if pos.size and pos.max() > 100 * pos.min() else None)
-    im = ax.imshow(np.where(xy > 0, xy, np.nan).T if norm else xy.T, origin="lower",
-                   extent=extent, norm=norm, aspect="equal", cmap="viridis",
-                   interpolation="nearest")
-    fig.colorbar(im, ax=ax, label="dissipated energy per column [J]")
-    unit = "[m]" if extent else "[cell]"
-    ax.set_xlabel(f"x {unit}")
-    ax.set_ylabel(f"y {unit}")
-    ax.set_title("dissipation, summed over z", fontsize=10)
+    im = ax.imshow(np.where(m > 0, m, np.nan).T if norm else m.T, origin="lower",
+                   extent=None if extent is None else [1e3 * e for e in extent], norm=norm,
+                   aspect="equal", cmap="viridis", interpolation="nearest")
+    fig.colorbar(im, ax=ax, label=f"dissipated energy, summed over {summed} [J]")
+    unit = "[mm]" if extent else "[cell]"
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=4))
+    cells = " x ".join(str(n) for n in d.shape)
+    cfg = f"\n(output.collisions.grid_cells = {grid_cells})" if grid_cells else ""
+    ax.set_xlabel(f"{na} {unit}\ngrid of {cells} cells (x, y, z){cfg}", fontsize=9)
+    ax.set_ylabel(f"{nb} {unit}")
+    ax.set_title(f"dissipated energy,\nsummed over {summed}", fontsize=10)
 
 
 def main(argv):
@@ -209,17 +247,24 @@ def main(argv):
         if not panels:
             print("collision_summary: nothing to plot, collisions.png not written")
             return 0
-        fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.5), squeeze=False)
+        # The map's panel is as wide as its picture (a tall box's side view is narrow) and its
+        # colour bar need.
+        widths = [1.0] * len(panels)
+        if has_grid:
+            shape = project(grid_xyz(g))[0].shape
+            widths[-1] = 0.55 + 0.45 * min(1.0, shape[0] / max(shape[1], 1))
+        fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * sum(widths), 4.5), squeeze=False,
+                                 gridspec_kw={"width_ratios": widths})
         for ax, p in zip(axes[0], panels):
             if p == "grid":
-                draw_grid(fig, ax, g)
+                draw_grid(fig, ax, g, configured_grid_cells(run))
             else:
                 draw_hist(ax, hists[p][0], hists[p][1], p)
         fig.suptitle(f"{name}: collisions")
         fig.tight_layout()
     out = os.path.join(run, "collisions.png")
     tmp = os.path.join(run, "collisions.tmp.png")
-    fig.savefig(tmp, dpi=120)  # then rename: a viewer never sees a half-written PNG
+    fig.savefig(tmp, dpi=120, bbox_inches="tight")  # then rename: no half-written PNG is seen
     plt.close(fig)
     os.replace(tmp, out)
     print(out)
