@@ -10,11 +10,13 @@ particle-wall), dissipated energy per kg of powder by mechanism over the window 
 runs when any run's powder mass is unknown: no particles.h5 and a run that did not start
 empty, so that its inflow ledger does not give the mass either), the normal
 impact-speed distributions (from the per-contact rows where they cover the window, else from the
-whole-run histograms: the legend says which), and a side view (x-z, summed over y) of where the
-energy was dissipated over the whole run. Exit 0 on success, 2 on missing or unreadable input.
+whole-run histograms: the legend says which), and a map of where the energy was dissipated over
+the whole run, summed over the collision grid's axis with the fewest cells (a side view of a tall
+box, a top view of the flat jet mill). Runs that share a label are named by their folders. Exit 0 on success, 2 on missing or unreadable input.
 """
 import argparse
 import csv
+import math
 import os
 import sys
 
@@ -25,6 +27,11 @@ import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from collision_summary import grid_xyz, project  # noqa: E402  (the run plot's map, same view)
+from run_labels import split_runs, unique_labels  # noqa: E402
 
 MECHANISMS = [("normal_damping", "normal damping"), ("tangential_damping", "tangential damping"),
               ("sliding", "sliding"), ("rolling", "rolling")]
@@ -98,10 +105,12 @@ def energy_bars(ax, runs):
 
 def speed_distributions(ax, runs, hist):
     vmin, vmax = np.inf, 0.0  # range of occupied bins: the solver's bins span 1e-5..1e3 m/s
+    # Each run's rows by their place in the table: two runs can share a label.
+    per_run = split_runs(hist, [r["tool_label"] for r in runs],
+                         key=lambda h: (h["pair"], h["kind"], h["bin_lo_m_per_s"]))
     for i, r in enumerate(runs):
         for pair, ls in [("pp", "-"), ("pw", "--")]:
-            rows = [h for h in hist if h["label"] == r["label"] and h["pair"] == pair
-                    and h["kind"] == "normal"]
+            rows = [h for h in per_run[i] if h["pair"] == pair and h["kind"] == "normal"]
             if not rows:
                 continue
             lo = np.array([float(h["bin_lo_m_per_s"]) for h in rows])
@@ -122,26 +131,26 @@ def speed_distributions(ax, runs, hist):
     ax.set_ylabel("impacts per decade / all impacts [-]")
     ax.set_title("impact-speed distribution", fontsize=10)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left")  # the distributions peak right of the middle
 
 
-def side_view(run_dir):
-    """(x-z map of dissipated energy summed over y, extent, time) or None."""
+def energy_map(run_dir):
+    """(map of dissipated energy summed over the grid's axis with the fewest cells, the kept axes'
+    names, the summed axis' name, extent in m, time) or None. The solver's grid has cubic cells
+    with output.collisions.grid_cells along the box's longest edge, so a tall box is seen from the
+    side and a flat one (the jet mill) from above."""
     path = os.path.join(run_dir, "collisions.h5")
     if not os.path.isfile(path):
         return None
     with h5py.File(path, "r") as f:
         g = f.get("/grid")
-        if g is None or "dissipated_J" not in g:
+        if g is None or "dissipated_J" not in g or g["dissipated_J"].ndim != 3:
             return None
-        d = np.asarray(g["dissipated_J"][()], dtype=float)
-        order = g.attrs.get("axis_order", b"xyz")
-        order = order.decode() if isinstance(order, bytes) else str(order)
-        if order == "zyx":
-            d = d.transpose(2, 1, 0)  # to (x, y, z)
+        d = grid_xyz(g)
         lo, hi = np.asarray(g["lo_m"][()]), np.asarray(g["hi_m"][()])
-        t = float(f["/totals"].attrs.get("time_s", float("nan")))
-    return d.sum(axis=1), [lo[0], hi[0], lo[2], hi[2]], t
+        t = float(f["/totals"].attrs.get("time_s", float("nan"))) if "/totals" in f else math.nan
+    m, axes, summed, extent = project(d, lo, hi)
+    return m, axes, summed, extent, t
 
 
 def main(argv):
@@ -156,7 +165,11 @@ def main(argv):
     hist = read_rows(stem + "_impact_speed.csv")
     if not runs:
         fail(f"{args.csv} has no runs")
-    maps = [side_view(r["run_dir"]) for r in runs]
+    # Two runs with the same size factor share "l = <size_factor>": they are named by their
+    # folders. tool_label keeps the label of the tables' rows.
+    for r, lab in zip(runs, unique_labels([r["label"] for r in runs], [r["run_dir"] for r in runs])):
+        r["tool_label"], r["label"] = r["label"], lab
+    maps = [energy_map(r["run_dir"]) for r in runs]
     n_maps = sum(m is not None for m in maps)
     ncol = max(3, n_maps)
     fig = plt.figure(figsize=(4.6 * ncol, 9.5 if n_maps else 4.8))
@@ -174,12 +187,15 @@ def main(argv):
             continue
         ax = fig.add_subplot(gs[1, k])
         k += 1
-        xz, extent, t = m
-        im = ax.imshow(np.where(xz > 0, xz, np.nan).T, origin="lower", extent=extent, norm=norm,
-                       cmap="viridis", aspect="equal", interpolation="nearest")
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("z [m]")
-        ax.set_title(f"{r['label']}: dissipation 0..{t:.3g} s, summed over y", fontsize=9)
+        xz, (na, nb), summed, extent, t = m
+        im = ax.imshow(np.where(xz > 0, xz, np.nan).T, origin="lower",
+                       extent=[1e3 * e for e in extent], norm=norm, cmap="viridis",
+                       aspect="equal", interpolation="nearest")
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=4))
+        ax.set_xlabel(f"{na} [mm]")
+        ax.set_ylabel(f"{nb} [mm]")
+        ax.set_title(f"{r['label']}: dissipation 0..{t:.3g} s,\nsummed over {summed}"
+                     f" ({' x '.join(map(str, xz.shape))} cells)", fontsize=9)
         fig.colorbar(im, ax=ax, label="dissipated per cell column [J]", shrink=0.9)
     window = f"{num(runs[0], 't_from_s'):.4g}..{num(runs[0], 't_to_s'):.4g} s"
     fig.suptitle(f"collision statistics, window {window}")

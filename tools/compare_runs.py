@@ -6,7 +6,9 @@ usage: /usr/bin/python3 tools/compare_runs.py PREFIX [--png FILE]
 Reads PREFIX_stats.csv and PREFIX_spectra.csv (written by lbdem-compare-runs --out PREFIX) and each
 run's timeseries.csv (the run_dir column of the stats), and writes PREFIX.png: the time series with
 the analysis window shaded and each run's window mean +- standard error drawn over it, and the
-one-sided power spectral densities on log axes. Exit 0 on success, 2 on missing or unreadable input.
+one-sided power spectral densities on log axes. Runs that share a label (two runs with the same size
+factor are both "l = <size_factor>") are named by their folders. Exit 0 on success, 2 on missing or
+unreadable input.
 """
 import argparse
 import csv
@@ -22,6 +24,7 @@ from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter  # noqa
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_run import read_csv  # noqa: E402  (same partial-line handling as the run plots)
+from run_labels import split_runs, unique_labels  # noqa: E402
 
 UNITS = {"_Pa": "Pa", "_Nm": "N m", "_N": "N", "_J": "J", "_W": "W", "_kg": "kg", "_s": "s", "_m": "m",
          "_per_s": "1/s", "_Nms": "N m s", "_rad": "rad", "_m_per_s": "m/s"}
@@ -68,6 +71,11 @@ def main(argv):
     spectra = read_rows(args.prefix + "_spectra.csv")
     if not stats:
         fail(f"{args.prefix}_stats.csv has no runs")
+    # Each run's spectrum by its place in the table (labels can repeat), then labels made unique:
+    # two runs with the same size factor are named by their folders.
+    run_spectra = split_runs(spectra, [s["label"] for s in stats],
+                             key=lambda r: r["frequency_Hz"])
+    labels = unique_labels([s["label"] for s in stats], [s["run_dir"] for s in stats])
     column = stats[0]["column"]
     unit = unit_of(column)
     ulabel = f" [{unit}]" if unit else ""
@@ -88,7 +96,7 @@ def main(argv):
         mean, err, std = float(s["mean"]), float(s["stderr_mean"]), float(s["std"])
         note = "" if s["plateau"] == "1" else ", no plateau"
         top.plot(t, y, color=color, lw=0.9, alpha=0.85,
-                 label=f"{s['label']}: {mean:.4g} ± {err:.2g} (sd {std:.3g}{note})")
+                 label=f"{labels[i]}: {mean:.4g} ± {err:.2g} (sd {std:.3g}{note})")
         a, b = float(s["t_from_s"]), float(s["t_to_s"])
         top.hlines(mean, a, b, color=color, lw=2, ls="--")
         top.fill_between([a, b], mean - err, mean + err, color=color, alpha=0.25, lw=0)
@@ -101,13 +109,13 @@ def main(argv):
 
     plotted = 0
     for i, s in enumerate(stats):
-        rows = [r for r in spectra if r["label"] == s["label"]]
+        rows = run_spectra[i]
         f = np.array([float(r["frequency_Hz"]) for r in rows])
         p = np.array([float(r["psd_per_Hz"]) for r in rows])
         keep = (f > 0) & (p > 0)  # k = 0 holds only what the detrend left; log axes need > 0
         if keep.any():
             bot.plot(f[keep], p[keep], color=f"C{i}", lw=1.2,
-                     label=f"{s['label']} (peak {float(s['peak_frequency_Hz']):.3g} Hz)")
+                     label=f"{labels[i]} (peak {float(s['peak_frequency_Hz']):.3g} Hz)")
             plotted += 1
     if plotted:
         if not args.linear:
@@ -124,7 +132,7 @@ def main(argv):
     bot.set_xlabel("frequency [Hz]")
     squared = f"({unit})²" if " " in unit or "/" in unit else f"{unit}²"
     bot.set_ylabel(f"PSD [{squared}/Hz]" if unit else "PSD [1/Hz]")
-    fs = sorted({float(r["frequency_Hz"]) for r in spectra if r["label"] == stats[0]["label"]})
+    fs = sorted({float(r["frequency_Hz"]) for r in run_spectra[0]})
     res = f" (resolution {fs[1] - fs[0]:.3g} Hz)" if len(fs) > 1 else ""
     bot.set_title(f"one-sided PSD of the detrended, Hann-windowed signal{res}", fontsize=10)
     bot.grid(alpha=0.3, which="both")
