@@ -242,7 +242,7 @@ def energy_budget(cols, t, tlabel, run_name, out, cfg):
     if len(diss) > 1:
         terms.append(("dissipated: total", sum(cols[k] for k in diss),
                       dict(ls="--", lw=1.4, color="k")))
-    for (label, s), color in zip(energy_sources(cols), ["C7", "C8", "C9", "tab:olive"]):
+    for (label, s), color in zip(energy_sources(cols), ["tab:cyan", "tab:olive", "navy", "darkgoldenrod"]):
         terms.append((f"source: {label}", s, dict(ls=":", lw=2, color=color)))
     inj = cols.get("energy_injected_J")
     if inj is not None:
