@@ -136,9 +136,10 @@ def speed_distributions(ax, runs, hist):
 
 def energy_map(run_dir):
     """(map of dissipated energy summed over the grid's axis with the fewest cells, the kept axes'
-    names, the summed axis' name, extent in m, time) or None. The solver's grid has cubic cells
-    with output.collisions.grid_cells along the box's longest edge, so a tall box is seen from the
-    side and a flat one (the jet mill) from above."""
+    names, the summed axis' name, extent in m, time) or None. The solver's grid has
+    output.collisions.grid_cells cells along the box's longest edge and cells of about that size
+    along the others, so a tall box is seen from the side and a flat one (the jet mill) from
+    above."""
     path = os.path.join(run_dir, "collisions.h5")
     if not os.path.isfile(path):
         return None

@@ -5,8 +5,9 @@ usage: /usr/bin/python3 tools/collision_summary.py RUN_DIR
 
 Reads the groups /histograms, /totals, /rows and /grid, each optional. /grid arrays are taken as
 indexed (x, y, z) unless the group has an attribute axis_order = "zyx". The map of where energy was
-dissipated sums the grid over its axis with the fewest cells (the grid's cubic cells put
-output.collisions.grid_cells along the box's longest edge, so a tall box is seen from the side). Exit 0 on success or when
+dissipated sums the grid over its axis with the fewest cells (the solver puts
+output.collisions.grid_cells cells along the box's longest edge and cells of about that size along
+the others, so a tall box is seen from the side). Exit 0 on success or when
 there is no collisions.h5, 1 when the file cannot be read, 2 when RUN_DIR is missing.
 """
 import os
@@ -169,8 +170,8 @@ def grid_xyz(g):
 
 def projection_axis(shape):
     """The axis the map sums over: the one with the fewest cells, z first among equals (a top view).
-    The solver makes the grid's cells cubes of (longest box edge) / output.collisions.grid_cells, so
-    the longest edge holds grid_cells of them and a tall box only a few across: a map summed over
+    The solver sizes the cells as (longest box edge) / output.collisions.grid_cells on every axis,
+    so the longest edge holds grid_cells of them and a tall box only a few across: a map summed over
     the long axis would show those few."""
     return min((2, 1, 0), key=lambda a: shape[a])
 
