@@ -89,13 +89,18 @@ def energy_bars(ax, runs):
         v = np.array([num(r, f"dissipated_{k}_J") for r in runs]) / scale
         ax.bar(x, v, 0.6, bottom=bottom, label=lab, color=f"C{j + 4}")
         bottom += np.nan_to_num(v)
+    # Upright inside a tall bar (white), above a short one, so that five runs' labels do not run
+    # into each other or the legend.
+    top = np.nanmax(bottom) if np.any(bottom > 0) else 1.0
     for i, r in enumerate(runs):
         rate = (f"{num(r, 'dissipation_rate_per_kg_W_per_kg'):.3g} W/kg" if per_kg
                 else f"{num(r, 'dissipation_rate_W'):.3g} W")
-        ax.text(i, bottom[i], f"{rate}\n{num(r, 'dissipated_per_collision_J'):.2g} J/coll.",
-                ha="center", va="bottom", fontsize=7)
-    ax.set_xticks(x, [r["label"] for r in runs], fontsize=8)
-    ax.margins(y=0.2)
+        inside = bottom[i] > 0.6 * top
+        ax.text(i, 0.03 * top if inside else bottom[i],
+                f" {rate}, {num(r, 'dissipated_per_collision_J'):.2g} J/coll.", ha="center",
+                va="bottom", rotation=90, fontsize=7, color="white" if inside else "black")
+    ax.set_xticks(x, [r["label"] for r in runs], rotation=20, ha="right", fontsize=8)
+    ax.margins(y=0.1)
     ax.set_ylabel("dissipated in the window per kg of powder [J/kg]" if per_kg
                   else "dissipated in the window [J] (a powder mass is unknown)")
     ax.set_title("dissipated energy by mechanism", fontsize=10)

@@ -118,15 +118,17 @@ def main():
     win = f"study time {a.t0 - a.offset:.3g}-{a.t1 - a.offset:.3g} s"
 
     fig, axes = panels(len(cases))
+    dots = None
     for ax, c in zip(axes, cases):
         p = maps(c, "mill_positions.csv")
         if p:
-            ax.scatter(1e3 * p["x_m"], 1e3 * p["y_m"], s=0.2, c=p["speed_m_per_s"], cmap="viridis",
-                       vmin=0, vmax=30, rasterized=True)
+            dots = ax.scatter(1e3 * p["x_m"], 1e3 * p["y_m"], s=0.2, c=p["speed_m_per_s"],
+                              cmap="viridis", vmin=0, vmax=30, rasterized=True)
         chamber(ax, a.radius)
         ax.set_title(title(c, f"{c}: {len(p.get('x_m', []))} parcels"), fontsize=9)
-    fig.suptitle(f"Particles seen from above at study time {a.t1 - a.offset:.3g} s (colour: speed 0-30 m/s)")
-    fig.tight_layout()
+    if dots is not None:
+        fig.colorbar(dots, ax=list(axes[:len(cases)]), label="particle speed [m/s]", shrink=0.8)
+    fig.suptitle(f"Particles seen from above at study time {a.t1 - a.offset:.3g} s")
     save(fig, os.path.join(root, "positions.png"))
 
     fig, axes = panels(len(cases))
@@ -180,6 +182,7 @@ def main():
     ax2.set_ylabel("gas radial velocity [m/s] (outwards +)")
     for ax in (ax1, ax2):
         ax.set_xlabel("radius [mm]")
+        ax.set_xlim(0, 1e3 * a.radius)  # the grid's corners lie outside the chamber
         ax.axhline(0, color="0.6", lw=0.5)
         ax.legend(fontsize=8)
     fig.suptitle(f"Gas velocity against radius (chamber height average) at study time {a.t1 - a.offset:.3g} s")
