@@ -114,13 +114,45 @@ def save(fig, path):
     os.replace(tmp, path)
 
 
+def plot_phases(phase_rows, path):
+    """The phase timers' shares per case and thread count as stacked bars (phases.csv's rows)."""
+    keys = list(dict.fromkeys((p["case"], int(p["threads"])) for p in phase_rows))
+    names = list(dict.fromkeys(p["phase"] for p in phase_rows))
+    # One line per word of the case's name under each bar, so that neighbours do not touch.
+    labels = [c.replace("_", "\n") + f"\n{t} thr" for c, t in keys]
+    fig, ax = plt.subplots(figsize=(max(6, 1.1 * len(keys)) + 3, 5))
+    bottom = np.zeros(len(keys))
+    for j, name in enumerate(names):
+        vals = []
+        for c, t in keys:
+            mine = [p for p in phase_rows if p["case"] == c and int(p["threads"]) == t]
+            tot = sum(float(p["seconds"]) for p in mine)
+            s = sum(float(p["seconds"]) for p in mine if p["phase"] == name)
+            vals.append(100 * s / tot if tot > 0 else 0)
+        ax.bar(range(len(keys)), vals, bottom=bottom, label=name, color=plt.cm.tab20(j % 20))
+        bottom += np.array(vals)
+    ax.set_xticks(range(len(keys)), labels, fontsize=9)
+    ax.set_ylabel("share of wall time [%]")
+    ax.legend(fontsize=7, bbox_to_anchor=(1.01, 1), loc="upper left")
+    fig.suptitle("Where the time goes (phase timers, end of each run's log.txt)")
+    fig.tight_layout()
+    save(fig, path)
+
+
 def main():
     ap = argparse.ArgumentParser(description="lbdem OpenMP thread scaling")
     ap.add_argument("build")
     ap.add_argument("--threads", default=",".join(str(t) for t in range(1, (os.cpu_count() or 1) + 1)))
     ap.add_argument("--case", action="append", choices=CASES)
     ap.add_argument("--out")
+    ap.add_argument("--replot-phases", metavar="CSV",
+                    help="draw phases.png next to an existing phases.csv and stop (build unused)")
     a = ap.parse_args()
+    if a.replot_phases:
+        with open(a.replot_phases) as f:
+            plot_phases(list(csv.DictReader(f)),
+                        os.path.join(os.path.dirname(a.replot_phases) or ".", "phases.png"))
+        return 0
     try:
         threads = sorted({int(t) for t in a.threads.split(",")})
     except ValueError:
@@ -189,26 +221,7 @@ def main():
     save(fig, os.path.join(out, "scaling.png"))
 
     if phase_rows:
-        labels = [f"{c}\n{t} thr" for c in cases for t in threads
-                  if any(p["case"] == c and p["threads"] == t for p in phase_rows)]
-        names = list(dict.fromkeys(p["phase"] for p in phase_rows))
-        fig, ax = plt.subplots(figsize=(max(6, 1.3 * len(labels)), 5))
-        bottom = np.zeros(len(labels))
-        for j, name in enumerate(names):
-            vals = []
-            for lab in labels:
-                c, t = lab.split("\n")[0], int(lab.split("\n")[1].split()[0])
-                tot = sum(p["seconds"] for p in phase_rows if p["case"] == c and p["threads"] == t)
-                s = sum(p["seconds"] for p in phase_rows
-                        if p["case"] == c and p["threads"] == t and p["phase"] == name)
-                vals.append(100 * s / tot if tot > 0 else 0)
-            ax.bar(labels, vals, bottom=bottom, label=name, color=plt.cm.tab20(j % 20))
-            bottom += np.array(vals)
-        ax.set_ylabel("share of wall time [%]")
-        ax.legend(fontsize=7, bbox_to_anchor=(1.01, 1), loc="upper left")
-        fig.suptitle("Where the time goes (phase timers, end of each run's log.txt)")
-        fig.tight_layout()
-        save(fig, os.path.join(out, "phases.png"))
+        plot_phases(phase_rows, os.path.join(out, "phases.png"))
     print(f"scaling table: {out}/scaling.csv, plot: {out}/scaling.png"
           + (f", phases: {out}/phases.png" if phase_rows else ""))
     return 1 if differs else 0
