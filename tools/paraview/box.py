@@ -17,22 +17,7 @@ import common  # noqa: E402
 
 
 def main():
-    run_dir, out_png = common.parse_args(__doc__)
-    view = common.make_view()
-    particles = common.open_run(run_dir, "particles.xdmf")
-    fluid = common.open_run(run_dir, "fluid.xdmf")
-    t = common.go_to_last_time(view, particles, fluid)
-    lo, hi = common.box_of(run_dir, particles, fluid)
-    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
-
-    common.show_particles(view, particles, t, bar_position=(0.64, 0.25))
-    if fluid is not None:
-        common.show_gas_slice(view, fluid, t, normal=[0, 1, 0], origin=centre,
-                              bar_position=(0.27, 0.25))
-    common.show_box_outline(view, lo, hi)
-    common.add_title(view, "box", t)
-    common.side_camera(view, lo, hi)
-    common.save(view, out_png)
+    common.side_view(__doc__, "box")
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ the gas as a slice coloured by gas speed, and save one PNG.
 
 import os
 import sys
+from types import SimpleNamespace
 
 try:
     import tomllib
@@ -201,12 +202,7 @@ def show_box_outline(view, lo, hi, color=(0.3, 0.3, 0.3)):
     b = Box(registrationName="box_walls")
     b.XLength, b.YLength, b.ZLength = [h - l for l, h in zip(lo, hi)]
     b.Center = [(l + h) / 2 for l, h in zip(lo, hi)]
-    o = Outline(Input=b)
-    d = Show(o, view)
-    d.AmbientColor = list(color)
-    d.DiffuseColor = list(color)
-    d.LineWidth = 1.5
-    return o
+    return show_outline(view, b, color)
 
 
 def add_title(view, text, time_s):
@@ -260,3 +256,31 @@ def save(view, out_png):
     SaveScreenshot(out_png, view, ImageResolution=[WIDTH, HEIGHT],
                    TransparentBackground=0, CompressionLevel="9")
     print("wrote %s" % out_png)
+
+
+def load_scene(doc):
+    """The command line, a view, both files at their last common time and the box: what every
+    scenario's script starts from (fluid is None for a run without gas)."""
+    run_dir, out_png = parse_args(doc)
+    view = make_view()
+    particles = open_run(run_dir, "particles.xdmf")
+    fluid = open_run(run_dir, "fluid.xdmf")
+    t = go_to_last_time(view, particles, fluid)
+    lo, hi = box_of(run_dir, particles, fluid)
+    return SimpleNamespace(run_dir=run_dir, out_png=out_png, view=view, particles=particles,
+                           fluid=fluid, t=t, lo=lo, hi=hi,
+                           centre=[(a + b) / 2 for a, b in zip(lo, hi)])
+
+
+def side_view(doc, title):
+    """A box-shaped run seen along +y: particles by speed, the gas on the mid-plane y where the
+    run has gas, the box's edges (box.py, fluidized_bed.py)."""
+    s = load_scene(doc)
+    show_particles(s.view, s.particles, s.t, bar_position=(0.64, 0.25))
+    if s.fluid is not None:
+        show_gas_slice(s.view, s.fluid, s.t, normal=[0, 1, 0], origin=s.centre,
+                       bar_position=(0.27, 0.25))
+    show_box_outline(s.view, s.lo, s.hi)
+    add_title(s.view, title, s.t)
+    side_camera(s.view, s.lo, s.hi)
+    save(s.view, s.out_png)

@@ -17,13 +17,9 @@ import common  # noqa: E402
 
 
 def main():
-    run_dir, out_png = common.parse_args(__doc__)
-    view = common.make_view()
-    particles = common.open_run(run_dir, "particles.xdmf")
-    fluid = common.open_run(run_dir, "fluid.xdmf")
-    t = common.go_to_last_time(view, particles, fluid)
-    lo, hi = common.box_of(run_dir, particles, fluid)
-    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
+    s = common.load_scene(__doc__)
+    view, particles, fluid, t, lo, hi, centre = (s.view, s.particles, s.fluid, s.t, s.lo, s.hi,
+                                                 s.centre)
 
     common.show_particles(view, particles, t, bar_position=(0.84, 0.25),
                           preset="Inferno (matplotlib)")
@@ -38,7 +34,7 @@ def main():
     half = max((hi[0] - lo[0]) * HEIGHT_OVER_WIDTH, hi[1] - lo[1]) / 2
     common.set_camera(view, centre, direction=[0, 0, 1], up=[0, 1, 0],
                       distance=10 * (hi[0] - lo[0]), parallel_scale=1.12 * half)
-    common.save(view, out_png)
+    common.save(view, s.out_png)
 
 
 HEIGHT_OVER_WIDTH = common.HEIGHT / common.WIDTH
