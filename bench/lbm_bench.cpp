@@ -98,10 +98,10 @@ std::uint64_t fnv1a(const double* p, std::size_t n) {
 }
 
 Run run(const std::string& scheme, int n, int steps, int warmup, const Bgk& op, double u0,
-        bool porous, PopulationStorage storage) {
+        bool porous, Precision precision) {
   LbmSettings s;
   s.nx = s.ny = s.nz = n;
-  s.storage = storage;
+  s.precision = precision;
   s.collision = op;
   if (porous) s.collision = Trt::from_tau(1.0 / op.omega);
   LbmSolver solver(s);
@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
   int steps = 200, warmup = 20;
   double tau = 0.6, u0 = 0.05;
   bool porous = false;
-  std::vector<std::string> storages = {"double"};
+  std::vector<std::string> precisions = {"double"};
   app.add_option("--n", sizes, "cube edges N (cells)");
   app.add_option("--threads", threads, "OpenMP thread counts");
   app.add_option("--steps", steps, "timed steps")->check(CLI::PositiveNumber);
@@ -195,15 +195,15 @@ int main(int argc, char** argv) {
   app.add_flag("--porous", porous,
                "the coupled gas kernel instead: TRT, porous form, per-cell force, velocity sums "
                "(scheme aa)");
-  app.add_option("--storage", storages,
-                 "population storage of the AA kernel: double, float (f - w in float, arithmetic "
-                 "in double; lbm/pdf_field.hpp)")
-      ->check(CLI::IsMember({"double", "float"}));
+  app.add_option("--precision", precisions,
+                 "precision of the AA kernel: double, single (populations f - w, per-cell fields "
+                 "and arithmetic in float; lbm/cell.hpp)")
+      ->check(CLI::IsMember({"double", "single"}));
   CLI11_PARSE(app, argc, argv);
-  const bool any_float = std::count(storages.begin(), storages.end(), "float") > 0;
+  const bool any_float = std::count(precisions.begin(), precisions.end(), "single") > 0;
   if (any_float && std::count(schemes.begin(), schemes.end(), "aa") != long(schemes.size())) {
     std::fprintf(stderr,
-                 "lbdem-bench-lbm: --storage float runs the solver's AA kernel only; "
+                 "lbdem-bench-lbm: --precision single runs the solver's AA kernel only; "
                  "fix: drop --scheme or give --scheme aa\n");
     return 2;
   }
@@ -216,25 +216,25 @@ int main(int argc, char** argv) {
 
   const MemoryUse base = memory_use();  // the program before any lattice
   const Bgk op = Bgk::from_tau(tau);
-  for (const std::string& storage : storages)
+  for (const std::string& precision : precisions)
     for (const std::string& scheme : schemes)
       for (int n : sizes)
         for (int t : threads) {
           omp_set_num_threads(t);
-          const bool f32 = storage == "float";
+          const bool f32 = precision == "single";
           const Run r = run(scheme, n, steps, warmup, op, u0, porous,
-                            f32 ? PopulationStorage::float32 : PopulationStorage::float64);
+                            f32 ? Precision::float32 : Precision::float64);
           const double k = 2.0 * kPi / n;
           const double theory = std::exp(-6.0 * op.viscosity() * k * k * steps);
           // Bytes per cell update for the roofline: 19 loads + 19 stores of 8 B (4 B in float);
           // ordinary stores on two lattices also read each destination line first (write-allocate),
-          // 456 B. Float runs are labelled "lbdem-float" so that the double parsers skip them.
+          // 456 B. Single runs are labelled "lbdem-single" so that the double parsers skip them.
           const double bytes = f32 ? 152 : scheme == "ab" ? 456 : 304;
           std::printf(
               "%s LBM TGV N=%d, %d thread(s): %.1f MLUPS, E_ratio %.4f (theory %.3f), scheme %s, "
               "%.0f B/cell = %.1f GB/s%s state_hash=%016llx rss_bytes=%zu base_rss_bytes=%zu "
               "peak_bytes=%zu\n",
-              f32 ? "lbdem-float" : "lbdem", n, t, r.mlups, r.e_ratio, theory,
+              f32 ? "lbdem-single" : "lbdem", n, t, r.mlups, r.e_ratio, theory,
               porous ? "aa" : scheme.c_str(), bytes, r.mlups * bytes / 1e3,
               porous ? " (porous TRT kernel with Darcy drag: the theory is the free decay, not "
                        "this one)"

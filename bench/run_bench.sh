@@ -47,7 +47,7 @@ if [[ $DEM == 1 ]]; then
 fi
 if [[ $LBM == 1 ]]; then
   # shellcheck disable=SC2086
-  "$BUILD_DIR/bin/lbdem-bench-lbm" --n $LBM_SIZES --threads 1 2 --storage double float | tee -a "$TABLE"
+  "$BUILD_DIR/bin/lbdem-bench-lbm" --n $LBM_SIZES --threads 1 2 --precision double single | tee -a "$TABLE"
 fi
 
 if [[ $PEERS == 1 ]]; then
@@ -104,17 +104,17 @@ if [[ $PEERS == 1 ]]; then
       m = $0; sub(/ MLUPS.*/, "", m); sub(/.*: /, "", m); l[n " " t] = m + 0 }
     /^palabos / { n = substr($0, 12, 44); sub(/.*TGV /, "", n); sub(/\^3.*/, "", n)
       p[n " " (substr($0, 57, 5) + 0)] = substr($0, 63, 14) + 0 }
-    /^lbdem-float LBM TGV/ { n = $0; sub(/.*N=/, "", n); sub(/,.*/, "", n)
+    /^lbdem-single LBM TGV/ { n = $0; sub(/.*N=/, "", n); sub(/,.*/, "", n)
       t = $0; sub(/.*N=[0-9]+, /, "", t); sub(/ thread.*/, "", t)
       m = $0; sub(/ MLUPS.*/, "", m); sub(/.*: /, "", m); lf[n " " t] = m + 0 }
     /^roofline +D3Q19 double/ { r[substr($0, 57, 5) + 0] = substr($0, 63, 14) + 0 }
-    /^roofline +D3Q19 float/ { rf[substr($0, 57, 5) + 0] = substr($0, 63, 14) + 0 }
+    /^roofline +D3Q19 single/ { rf[substr($0, 57, 5) + 0] = substr($0, 63, 14) + 0 }
     END {
       for (k in l) { split(k, a, " ")
         if (p[k] > 0) printf "ratio lbdem / Palabos, TGV %s^3 at %s thread(s)/rank(s): %.2f\n", a[1], a[2], l[k] / p[k]
         if (r[a[2]] > 0) printf "lbdem share of the double roofline, TGV %s^3 at %s thread(s): %.0f %%\n", a[1], a[2], 100 * l[k] / r[a[2]]
-        if (lf[k] > 0) printf "lbdem float / double storage, TGV %s^3 at %s thread(s): %.2f\n", a[1], a[2], lf[k] / l[k]
-        if (lf[k] > 0 && rf[a[2]] > 0) printf "lbdem float share of the float roofline, TGV %s^3 at %s thread(s): %.0f %%\n", a[1], a[2], 100 * lf[k] / rf[a[2]] }
+        if (lf[k] > 0) printf "lbdem single / double precision, TGV %s^3 at %s thread(s): %.2f\n", a[1], a[2], lf[k] / l[k]
+        if (lf[k] > 0 && rf[a[2]] > 0) printf "lbdem single share of the single roofline, TGV %s^3 at %s thread(s): %.0f %%\n", a[1], a[2], 100 * lf[k] / rf[a[2]] }
     }' "$TABLE" | tee -a "$TABLE"
 fi
 echo "# table: $TABLE"

@@ -3,8 +3,18 @@
 #include "lbm/d3q19.hpp"
 
 #include <limits>
+#include <type_traits>
 
 namespace lbdem::lbm {
+
+/// The arithmetic of a cell update runs in R. Float arithmetic always works on shifted populations
+/// f_q - w_q (pdf_field.hpp, "DDF shifting"): f_q - w_q is of the order of w_q times the density
+/// and velocity deviations, so float's 24 bits resolve the deviations instead of the constant w_q;
+/// the density is then carried as drho = rho - 1 beside rho, and every equilibrium is formed
+/// shifted, never as a value near w_q minus w_q. Double arithmetic works on f_q itself (the
+/// reference mode, bitwise as before single precision existed).
+template <class R>
+inline constexpr bool kShifted = std::is_same_v<R, float>;
 
 /// Density and the physical velocity of one cell [lattice units].
 /// inv_eps = 1/eps of the porous (Guo & Zhao 2002) form: it multiplies the terms of second order
@@ -15,17 +25,23 @@ namespace lbdem::lbm {
 /// an estimated quarter of its time. Down to 3 and 2 (with porous.hpp and regularized_les.hpp),
 /// its stream-collide took 24.3 s instead of 31.0 s on 1.5 ms of cg8_p5bar (2 threads,
 /// 2026-11-24).
-struct CellMoments {
-  double rho, ux, uy, uz;
-  double inv_eps = 1.0;
+/// drho = rho - 1, formed from the shifted populations (kShifted<R>); what shifted equilibria use.
+template <class R>
+struct CellMomentsT {
+  R rho, ux, uy, uz;
+  R inv_eps = 1;
   // Set by cell_moments; NaN otherwise, so that a hand-built CellMoments cannot pass silently.
-  double inv_rho = std::numeric_limits<double>::quiet_NaN();
+  R inv_rho = std::numeric_limits<R>::quiet_NaN();
+  R drho = std::numeric_limits<R>::quiet_NaN();
 };
+using CellMoments = CellMomentsT<double>;
 
 /// Body force density acting on one cell [lattice units: mass / (cell dt^2)].
-struct CellForce {
-  double fx = 0, fy = 0, fz = 0;
+template <class R>
+struct CellForceT {
+  R fx = 0, fy = 0, fz = 0;
 };
+using CellForce = CellForceT<double>;
 
 namespace detail {
 // The hand-written sums below rely on this direction order (d3q19.hpp).
@@ -46,25 +62,27 @@ static_assert(moment_sums_match_order());
 /// rho = sum_q f_q and u = (sum_q c_q f_q + F/2) / rho: the half-force shift makes Guo forcing
 /// second-order accurate (Guo, Zheng & Shi 2002, Phys. Rev. E 65, 046308, eq. 19). The sums are
 /// trees, not chains, so a vector lane is not one 19-add dependency chain; their order is fixed.
-template <bool kForced>
-[[gnu::always_inline]] inline CellMoments cell_moments(const double (&f)[kQ],
-                                                       const CellForce& force) {
-  const double xp = (f[1] + f[7]) + (f[9] + f[11]) + f[13];
-  const double xm = (f[2] + f[8]) + (f[10] + f[12]) + f[14];
-  const double rest = ((f[0] + f[3]) + (f[4] + f[5])) + ((f[6] + f[15]) + (f[16] + f[17])) + f[18];
-  const double rho = (xp + xm) + rest;
-  double jx = xp - xm;
-  double jy =
-      ((f[3] - f[4]) + (f[7] - f[8])) + ((f[10] - f[9]) + (f[15] - f[16])) + (f[17] - f[18]);
-  double jz =
-      ((f[5] - f[6]) + (f[11] - f[12])) + ((f[14] - f[13]) + (f[15] - f[16])) + (f[18] - f[17]);
+/// Shifted (float): the same sums of f_q - w_q give drho directly and the momentum unchanged
+/// (sum_q w_q c_q = 0).
+template <bool kForced, class R>
+[[gnu::always_inline]] inline CellMomentsT<R> cell_moments(const R (&f)[kQ],
+                                                           const CellForceT<R>& force) {
+  const R xp = (f[1] + f[7]) + (f[9] + f[11]) + f[13];
+  const R xm = (f[2] + f[8]) + (f[10] + f[12]) + f[14];
+  const R rest = ((f[0] + f[3]) + (f[4] + f[5])) + ((f[6] + f[15]) + (f[16] + f[17])) + f[18];
+  const R sum = (xp + xm) + rest;
+  R jx = xp - xm;
+  R jy = ((f[3] - f[4]) + (f[7] - f[8])) + ((f[10] - f[9]) + (f[15] - f[16])) + (f[17] - f[18]);
+  R jz = ((f[5] - f[6]) + (f[11] - f[12])) + ((f[14] - f[13]) + (f[15] - f[16])) + (f[18] - f[17]);
   if constexpr (kForced) {
-    jx += 0.5 * force.fx;
-    jy += 0.5 * force.fy;
-    jz += 0.5 * force.fz;
+    jx += R(0.5) * force.fx;
+    jy += R(0.5) * force.fy;
+    jz += R(0.5) * force.fz;
   }
-  const double inv = 1.0 / rho;
-  return {rho, jx * inv, jy * inv, jz * inv, 1.0, inv};
+  const R rho = kShifted<R> ? sum + R(1) : sum;
+  const R drho = kShifted<R> ? sum : sum - R(1);  // unused (and dropped) in double
+  const R inv = R(1) / rho;
+  return {rho, jx * inv, jy * inv, jz * inv, R(1), inv, drho};
 }
 
 }  // namespace lbdem::lbm

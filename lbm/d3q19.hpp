@@ -48,9 +48,9 @@ template <int N, class Body>
 
 /// c_q . a with the zero components left out (-0.0 is the exact additive identity, so the
 /// compiler may fold it away; 0.0 * a may not be folded under IEEE rules).
-template <int q>
-inline double dot_c(double ax, double ay, double az) {
-  double s = -0.0;
+template <int q, class R>
+inline R dot_c(R ax, R ay, R az) {
+  R s = -0.0;
   if constexpr (kCx[q] == 1) s += ax;
   if constexpr (kCx[q] == -1) s -= ax;
   if constexpr (kCy[q] == 1) s += ay;

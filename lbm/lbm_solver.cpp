@@ -40,10 +40,13 @@ Grid make_grid(const LbmSettings& s) {
   return Grid(s.nx, s.ny, s.nz, s.faces.periodic_axes());
 }
 
-std::variant<PdfField<double>, PdfField<float>> make_pdf(const LbmSettings& s) {
+std::variant<LatticeFields<double>, LatticeFields<float>> make_lattice(const LbmSettings& s) {
   const Grid g = make_grid(s);
-  if (s.storage == PopulationStorage::float32) return PdfField<float>(g);
-  return PdfField<double>(g);
+  if (s.precision == Precision::float32)
+    return std::variant<LatticeFields<double>, LatticeFields<float>>(
+        std::in_place_type<LatticeFields<float>>, g);
+  return std::variant<LatticeFields<double>, LatticeFields<float>>(
+      std::in_place_type<LatticeFields<double>>, g);
 }
 
 WallVelocity uniform_velocity(const Vec3& u) {
@@ -53,7 +56,9 @@ WallVelocity uniform_velocity(const Vec3& u) {
 }  // namespace
 
 LbmSolver::LbmSolver(const LbmSettings& s)
-    : settings_(s), pdf_(make_pdf(s)), flags_(with_pdf([](const auto& p) { return p.grid(); })) {
+    : settings_(s),
+      lat_(make_lattice(s)),
+      flags_(with_pdf([](const auto& p) { return p.grid(); })) {
   std::array<CellFlag, 6> walls{}, open{};
   for (int f = 0; f < 6; ++f) {
     const FaceBoundary& face = s.faces[f];
@@ -203,11 +208,15 @@ void LbmSolver::rebuild_links() {
   runs_ = fluid_runs(grid(), flags_);
   bool any_wall_function = false;
   for (const Body& b : bodies_) any_wall_function = any_wall_function || b.wall_function;
-  for (auto& a : cell_moments_)
-    if (any_wall_function)
-      a.assign(std::size_t(grid().storage_cells()), 0.0);
-    else
-      std::vector<double>().swap(a);
+  keep_moments_ = any_wall_function;
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    for (auto& a : l.moments)
+      if (any_wall_function)
+        a.assign(std::size_t(grid().storage_cells()), T(0));
+      else
+        std::vector<T>().swap(a);
+  });
   links_dirty_ = false;
 }
 
@@ -226,7 +235,7 @@ void LbmSolver::initialize(
           double rho = 1.0;
           Vec3 u = Vec3::Zero();
           init(x, y, z, rho, u);
-          const double inv_eps = has_porosity() ? inv_eps_[std::size_t(n)] : 1.0;
+          const double inv_eps = has_porosity() ? 1.0 / eps_[std::size_t(n)] : 1.0;
           for (int q = 0; q < kQ; ++q)
             pdf.set(q, n, equilibrium(q, rho, u.x(), u.y(), u.z(), inv_eps));
         }
@@ -236,22 +245,37 @@ void LbmSolver::initialize(
   exchanged_mass_ = 0;
 }
 
+bool LbmSolver::has_force_field() const {
+  return with_lattice([](const auto& l) { return !l.force[0].empty(); });
+}
+
+bool LbmSolver::has_velocity_sum() const {
+  return with_lattice([](const auto& l) { return !l.u_sum[0].empty(); });
+}
+
 void LbmSolver::enable_force_field() {
   if (has_force_field()) return;
-  for (auto& f : force_) f.assign(std::size_t(grid().storage_cells()), 0.0);
+  with_lattice([&](auto& l) {
+    for (auto& f : l.force) f.assign(std::size_t(grid().storage_cells()), 0);
+  });
 }
 
 void LbmSolver::set_cell_force(int x, int y, int z, const Vec3& f) {
   if (!has_force_field()) throw std::logic_error("set_cell_force before enable_force_field");
   const auto n = std::size_t(grid().index(x, y, z));
-  for (int a = 0; a < 3; ++a) force_[std::size_t(a)][n] = f[a];
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    for (int a = 0; a < 3; ++a) l.force[std::size_t(a)][n] = T(f[a]);
+  });
 }
 
 void LbmSolver::enable_porosity() {
   if (has_porosity()) return;
   eps_.assign(std::size_t(grid().storage_cells()), 1.0);
-  inv_eps_.assign(std::size_t(grid().storage_cells()), 1.0);
-  alpha_.assign(std::size_t(grid().storage_cells()), 0.0);
+  with_lattice([&](auto& l) {
+    l.inv_eps.assign(std::size_t(grid().storage_cells()), 1);
+    l.alpha.assign(std::size_t(grid().storage_cells()), 0);
+  });
 }
 
 void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha) {
@@ -262,22 +286,29 @@ void LbmSolver::set_cell_porosity(int x, int y, int z, double eps, double alpha)
     throw std::invalid_argument("Darcy rate must be >= 0, got " + std::to_string(alpha));
   const auto n = std::size_t(grid().index(x, y, z));
   eps_[n] = eps;
-  inv_eps_[n] = 1.0 / eps;
-  alpha_[n] = alpha;
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    l.inv_eps[n] = T(1.0 / eps);
+    l.alpha[n] = T(alpha);
+  });
 }
 
 void LbmSolver::enable_velocity_sum() {
   if (has_velocity_sum()) return;
-  for (auto& a : u_sum_) a.assign(std::size_t(grid().storage_cells()), 0.0);
+  with_lattice([&](auto& l) {
+    for (auto& a : l.u_sum) a.assign(std::size_t(grid().storage_cells()), 0);
+  });
 }
 
 void LbmSolver::take_velocity_sum(std::vector<Vec3>& out) {
   velocity_sum(out);
-  for (auto& a : u_sum_) {
-    const auto m = a.size();
+  with_lattice([&](auto& l) {
+    for (auto& a : l.u_sum) {
+      const auto m = a.size();
 #pragma omp parallel for schedule(static)
-    for (std::size_t n = 0; n < m; ++n) a[n] = 0.0;
-  }
+      for (std::size_t n = 0; n < m; ++n) a[n] = 0;
+    }
+  });
 }
 
 void LbmSolver::set_velocity_sum(std::span<const Vec3> sum) {
@@ -286,12 +317,16 @@ void LbmSolver::set_velocity_sum(std::span<const Vec3> sum) {
     throw std::invalid_argument("velocity sum: " + std::to_string(sum.size()) + " values for " +
                                 std::to_string(g.cells()) + " cells");
   enable_velocity_sum();
-  for_each_row(g, [&](int y, int z) {
-    for (int x = 0; x < g.nx(); ++x) {
-      const auto n = std::size_t(g.index(x, y, z));
-      const Vec3& u = sum[std::size_t(g.compact_index(x, y, z))];
-      for (int a = 0; a < 3; ++a) u_sum_[std::size_t(a)][n] = flags_.fluid(Index(n)) ? u[a] : 0.0;
-    }
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    for_each_row(g, [&](int y, int z) {
+      for (int x = 0; x < g.nx(); ++x) {
+        const auto n = std::size_t(g.index(x, y, z));
+        const Vec3& u = sum[std::size_t(g.compact_index(x, y, z))];
+        for (int a = 0; a < 3; ++a)
+          l.u_sum[std::size_t(a)][n] = flags_.fluid(Index(n)) ? T(u[a]) : T(0);
+      }
+    });
   });
 }
 
@@ -301,13 +336,16 @@ void LbmSolver::velocity_sum(std::vector<Vec3>& out) const {
   // Row by row on all threads (each entry written once): the exchange calls this on the whole
   // lattice, 0.2 s per millisecond of the jet mill's CG-8 case when serial.
   const bool summed = has_velocity_sum();
-  for_each_row(g, [&](int y, int z) {
-    for (int x = 0; x < g.nx(); ++x) {
-      const auto n = std::size_t(g.index(x, y, z));
-      const bool take = summed && flags_.fluid(Index(n));
-      out[std::size_t(g.compact_index(x, y, z))] =
-          take ? Vec3(u_sum_[0][n], u_sum_[1][n], u_sum_[2][n]) : Vec3(Vec3::Zero());
-    }
+  with_lattice([&](const auto& l) {
+    const auto& s = l.u_sum;
+    for_each_row(g, [&](int y, int z) {
+      for (int x = 0; x < g.nx(); ++x) {
+        const auto n = std::size_t(g.index(x, y, z));
+        const bool take = summed && flags_.fluid(Index(n));
+        out[std::size_t(g.compact_index(x, y, z))] =
+            take ? Vec3(double(s[0][n]), double(s[1][n]), double(s[2][n])) : Vec3(Vec3::Zero());
+      }
+    });
   });
 }
 
@@ -321,21 +359,24 @@ void LbmSolver::set_porosity_field(std::span<const double> eps, std::span<const 
   // Row by row on all threads; a bad value throws the error of the first such cell in compact
   // order (the lowest row's, parallel_for.hpp), whatever the thread count.
   const int ny = g.ny();
-  parallel_for(std::size_t(ny) * std::size_t(g.nz()), 1, [&](std::size_t r) {
-    const int y = int(r % std::size_t(ny)), z = int(r / std::size_t(ny));
-    for (int x = 0; x < g.nx(); ++x) {
-      const Index n = g.index(x, y, z);
-      if (!flags_.fluid(n)) continue;
-      const auto c = std::size_t(g.compact_index(x, y, z));
-      if (!(eps[c] > 0 && eps[c] <= 1) || !(alpha[c] >= 0 && std::isfinite(alpha[c])))
-        throw std::invalid_argument(
-            "porosity field at cell (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
-            std::to_string(z) + "): eps = " + std::to_string(eps[c]) +
-            ", alpha = " + std::to_string(alpha[c]) + "; need 0 < eps <= 1, alpha >= 0");
-      eps_[std::size_t(n)] = eps[c];
-      inv_eps_[std::size_t(n)] = 1.0 / eps[c];
-      alpha_[std::size_t(n)] = alpha[c];
-    }
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    parallel_for(std::size_t(ny) * std::size_t(g.nz()), 1, [&](std::size_t r) {
+      const int y = int(r % std::size_t(ny)), z = int(r / std::size_t(ny));
+      for (int x = 0; x < g.nx(); ++x) {
+        const Index n = g.index(x, y, z);
+        if (!flags_.fluid(n)) continue;
+        const auto c = std::size_t(g.compact_index(x, y, z));
+        if (!(eps[c] > 0 && eps[c] <= 1) || !(alpha[c] >= 0 && std::isfinite(alpha[c])))
+          throw std::invalid_argument(
+              "porosity field at cell (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
+              std::to_string(z) + "): eps = " + std::to_string(eps[c]) +
+              ", alpha = " + std::to_string(alpha[c]) + "; need 0 < eps <= 1, alpha >= 0");
+        eps_[std::size_t(n)] = eps[c];
+        l.inv_eps[std::size_t(n)] = T(1.0 / eps[c]);
+        l.alpha[std::size_t(n)] = T(alpha[c]);
+      }
+    });
   });
 }
 
@@ -345,12 +386,15 @@ void LbmSolver::set_force_field(std::span<const Vec3> force) {
     throw std::invalid_argument("force field: " + std::to_string(force.size()) + " values for " +
                                 std::to_string(g.cells()) + " cells");
   enable_force_field();
-  for_each_row(g, [&](int y, int z) {
-    for (int x = 0; x < g.nx(); ++x) {
-      const auto n = std::size_t(g.index(x, y, z));
-      const Vec3& f = force[std::size_t(g.compact_index(x, y, z))];
-      for (int a = 0; a < 3; ++a) force_[std::size_t(a)][n] = f[a];
-    }
+  with_lattice([&](auto& l) {
+    using T = typename std::decay_t<decltype(l)>::value_type;
+    for_each_row(g, [&](int y, int z) {
+      for (int x = 0; x < g.nx(); ++x) {
+        const auto n = std::size_t(g.index(x, y, z));
+        const Vec3& f = force[std::size_t(g.compact_index(x, y, z))];
+        for (int a = 0; a < 3; ++a) l.force[std::size_t(a)][n] = T(f[a]);
+      }
+    });
   });
 }
 
@@ -376,10 +420,10 @@ void LbmSolver::porosity(std::vector<double>& eps) const {
 void LbmSolver::step() {
   PhaseLap lap;
   if (links_dirty_) rebuild_links();
-  with_pdf([&](const auto& pdf) {
-    with_forcing([&](const auto& forcing) {
+  with_lattice([&](const auto& l) {
+    with_forcing(l, [&](const auto& forcing) {
       for (Body& b : bodies_)
-        if (b.outlet_density > 0) sample_outlet_velocity(pdf, state_, forcing, b.outlet);
+        if (b.outlet_density > 0) sample_outlet_velocity(l.pdf, state_, forcing, b.outlet);
     });
   });
   lap.to(Phase::lbm_boundaries);
@@ -387,11 +431,10 @@ void LbmSolver::step() {
   lap.to(Phase::lbm_collide_stream);
   state_ = after_step(state_);
   const WernerWengle law{viscosity(settings_.collision)};
-  const MomentFields moments{
-      cell_moments_[0].data(),
-      {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
   for (Body& b : bodies_) b.previous_force = b.load.force;
-  with_pdf([&](auto& pdf) {
+  with_lattice([&](auto& l) {
+    auto& pdf = l.pdf;
+    const auto moments = l.moment_fields();
     for (Body& b : bodies_)
       b.load = b.outlet_density > 0
                    ? apply_anti_bounce_back(pdf, state_, b.links, b.outlet, b.origin)
@@ -529,8 +572,9 @@ std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rh
   const Grid& g = grid();
   // First bad x of every row (-1: none); rows are independent, so any thread split finds the same.
   std::vector<int> first_bad(std::size_t(g.ny()) * std::size_t(g.nz()), -1);
-  with_pdf([&](const auto& pdf) {
-    with_forcing([&](const auto& forcing) {
+  with_lattice([&](const auto& l) {
+    const auto& pdf = l.pdf;
+    with_forcing(l, [&](const auto& forcing) {
       for_each_row(g, [&](int y, int z) {
         for (int x = 0; x < g.nx(); ++x) {
           if (!flags_.fluid(g.index(x, y, z))) continue;
@@ -556,8 +600,9 @@ std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rh
 
 CellMoments LbmSolver::moments(int x, int y, int z) const {
   CellMoments m{};
-  with_pdf([&](const auto& pdf) {
-    with_forcing([&](const auto& forcing) { m = cell_moments_at(pdf, state_, forcing, x, y, z); });
+  with_lattice([&](const auto& l) {
+    with_forcing(
+        l, [&](const auto& forcing) { m = cell_moments_at(l.pdf, state_, forcing, x, y, z); });
   });
   return m;
 }
@@ -569,8 +614,8 @@ void LbmSolver::density(std::vector<double>& rho) const {
 }
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
-  with_pdf([&](const auto& pdf) {
-    with_forcing([&](const auto& f) { moment_fields(pdf, state_, f, flags_, nullptr, &u); });
+  with_lattice([&](const auto& l) {
+    with_forcing(l, [&](const auto& f) { moment_fields(l.pdf, state_, f, flags_, nullptr, &u); });
   });
 }
 

@@ -23,6 +23,7 @@
 #include "lbm/fluid_runs.hpp"
 #include "lbm/forcing/guo.hpp"
 #include "lbm/grid.hpp"
+#include "lbm/lattice_fields.hpp"
 #include "lbm/level_flux.hpp"
 #include "lbm/pdf_field.hpp"
 
@@ -47,8 +48,9 @@ struct LbmSettings {
   CollisionModel collision = Bgk{1.0};
   Vec3 body_force = Vec3::Zero();  // uniform force density [lattice units]
   double wall_density = 1.0;       // rho_w of Ladd's moving-wall term [lattice units]
-  // Precision of the stored populations (pdf_field.hpp); the arithmetic is double either way.
-  PopulationStorage storage = PopulationStorage::float64;
+  // Precision of the populations, of the kernel's per-cell fields and of its arithmetic
+  // (lattice_fields.hpp); double is the reference mode.
+  Precision precision = Precision::float64;
 };
 
 class LbmSolver {
@@ -59,7 +61,7 @@ class LbmSolver {
   const Grid& grid() const { return flags_.grid(); }
   long steps() const { return steps_; }
   AaState state() const { return state_; }
-  PopulationStorage storage() const { return settings_.storage; }
+  Precision precision() const { return settings_.precision; }
   const FlagField& flags() const { return flags_; }
   /// The populations of cell (x, y, z) as the next collision reads them (either AA state).
   void cell_populations(int x, int y, int z, double (&f)[kQ]) const;
@@ -126,7 +128,7 @@ class LbmSolver {
   void set_body_force(const Vec3& f) { settings_.body_force = f; }
   /// Per-cell force density (SoA over storage cells, Grid::index), zero when first enabled.
   void enable_force_field();
-  bool has_force_field() const { return !force_[0].empty(); }
+  bool has_force_field() const;
   void set_cell_force(int x, int y, int z, const Vec3& f);
 
   /// The porous-medium form (forcing/porous.hpp, Guo & Zhao 2002): per-cell fluid fraction eps and
@@ -143,7 +145,7 @@ class LbmSolver {
   /// otherwise). take_velocity_sum returns them over interior cells in compact order and restarts
   /// the sums; the number of steps they hold is the caller's to count.
   void enable_velocity_sum();
-  bool has_velocity_sum() const { return !u_sum_[0].empty(); }
+  bool has_velocity_sum() const;
   void take_velocity_sum(std::vector<Vec3>& out);
   /// The sums as take_velocity_sum returns them, left running; and sums put back (a checkpoint
   /// written inside an exchange interval): interior cells in compact order, solid cells ignored.
@@ -250,39 +252,44 @@ class LbmSolver {
   void rebuild_links();
   void add_mass_sources();
   void set_wall_velocity_terms(Body& b);
-  /// Calls fn(forcing) with the cheapest policy that represents the current forces; with
-  /// `accumulate`, a porous policy also adds to the velocity sums (the collision of a step only).
-  template <class Fn>
-  void with_forcing(Fn&& fn, bool accumulate = false) const;
+  /// Calls fn(forcing) with the cheapest policy that represents the current forces, its per-cell
+  /// fields those of lat; with `accumulate`, a porous policy also adds to the velocity sums (the
+  /// collision of a step only).
+  template <class T, class Fn>
+  void with_forcing(const LatticeFields<T>& lat, Fn&& fn, bool accumulate = false) const;
   /// The collision of one step with operator op over the fluid runs (solver_passes.hpp).
   template <class Op>
   void collide_pass(const Op& op);
 
-  /// Calls fn(pdf) with the population array in its storage type.
+  /// Calls fn(lattice) or fn(pdf) with the fields in their precision.
+  template <class Fn>
+  decltype(auto) with_lattice(Fn&& fn) const {
+    return std::visit([&](const auto& l) -> decltype(auto) { return fn(l); }, lat_);
+  }
+  template <class Fn>
+  decltype(auto) with_lattice(Fn&& fn) {
+    return std::visit([&](auto& l) -> decltype(auto) { return fn(l); }, lat_);
+  }
   template <class Fn>
   decltype(auto) with_pdf(Fn&& fn) const {
-    return std::visit([&](const auto& p) -> decltype(auto) { return fn(p); }, pdf_);
+    return with_lattice([&](const auto& l) -> decltype(auto) { return fn(l.pdf); });
   }
   template <class Fn>
   decltype(auto) with_pdf(Fn&& fn) {
-    return std::visit([&](auto& p) -> decltype(auto) { return fn(p); }, pdf_);
+    return with_lattice([&](auto& l) -> decltype(auto) { return fn(l.pdf); });
   }
 
   LbmSettings settings_;
-  std::variant<PdfField<double>, PdfField<float>> pdf_;
+  std::variant<LatticeFields<double>, LatticeFields<float>> lat_;
   FlagField flags_;
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};
-  std::array<std::vector<double>, 3> force_;
   std::vector<MassSource> mass_sources_;
   std::vector<double> mass_source_field_;  // per interior cell, compact order; empty: none
   double mass_source_field_sum_ = 0;       // its sum, bitwise independent of the thread count
-  std::vector<double> eps_, alpha_;        // per storage cell, when porosity is enabled
-  std::vector<double> inv_eps_;            // 1 / eps_, what the kernel reads (no division per cell)
-  mutable std::array<std::vector<double>, 3> u_sum_;  // velocity sums per storage cell
-  // rho and u / eps of the last collision per storage cell, kept while a body has the wall
-  // function (forcing/moment_store.hpp); empty otherwise.
-  std::array<std::vector<double>, 4> cell_moments_;
+  std::vector<double> eps_;  // per storage cell, when porosity is enabled (the kernel reads 1/eps)
+  // Whether the lattice keeps rho and u / eps of the last collision (a body has the wall function).
+  bool keep_moments_ = false;
   double beta_ = 0;
   AaState state_ = AaState::natural;
   long steps_ = 0;

@@ -3,18 +3,17 @@
 // slot data[q * stride + n] (waLBerla fzyx, FluidX3D index_f). Each direction's array starts on a
 // 64-byte boundary; one array serves the in-place AA update (stream_collide.hpp).
 //
-// Storage precision (PopulationStorage): double, or float with the arithmetic still in double.
-// The kernel moves 2 x 19 populations per cell update and, where the lattice leaves the cache, is
-// memory-bound (stream_collide.hpp); float storage halves that traffic (measured in README,
-// "Performance": 1.1-1.2x out of cache, 0.7x in cache, where the conversions cost). Float slots
-// hold the shifted value f_q - w_q (the rest equilibrium at rho = 1 subtracted; Skordos 1993, Phys.
-// Rev. E 48, 4823; Lehmann, Krause, Amati, Sega, Harting & Gekle 2022, Phys. Rev. E 106, 015308,
-// "DDF shifting"): f_q - w_q is of the order of w_q times the density and velocity deviations, so
-// the 24-bit mantissa resolves those deviations instead of spending its bits on the constant w_q.
-// Double slots hold f_q itself (bitwise the results and checkpoints of before float existed).
-// PopulationCodec is the one place that converts; every read and write of a population goes through
-// it. w_q = w_qbar, so a slot keeps the same shift whichever of the pair q, qbar the AA pattern
-// stores in it.
+// Precision: double, or float (single). The kernel moves 2 x 19 populations per cell update and,
+// where the lattice leaves the cache, is memory-bound (stream_collide.hpp); float halves that
+// traffic. Float slots hold the shifted value f_q - w_q (the rest equilibrium at rho = 1
+// subtracted; Skordos 1993, Phys. Rev. E 48, 4823; Lehmann, Krause, Amati, Sega, Harting & Gekle
+// 2022, Phys. Rev. E 106, 015308, "DDF shifting"): f_q - w_q is of the order of w_q times the
+// density and velocity deviations, so the 24-bit mantissa resolves those deviations instead of
+// spending its bits on the constant w_q. The kernel computes on the shifted slots as they are, in
+// float (cell.hpp, kShifted); everything else (boundaries, moments for output, set-up) reads and
+// writes the population f_q in double through PopulationCodec, the one place that converts.
+// Double slots hold f_q itself. w_q = w_qbar, so a slot keeps the same shift whichever of the pair
+// q, qbar the AA pattern stores in it.
 #include "core/types.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/grid.hpp"
@@ -26,10 +25,12 @@
 
 namespace lbdem::lbm {
 
-enum class PopulationStorage { float64, float32 };
+/// The gas's precision: double (the reference) or single, where the populations, the kernel's
+/// per-cell fields and its arithmetic are float (lattice_fields.hpp, cell.hpp).
+enum class Precision { float64, float32 };
 
-inline std::string_view to_string(PopulationStorage s) {
-  return s == PopulationStorage::float64 ? "double" : "float";
+inline std::string_view to_string(Precision p) {
+  return p == Precision::float64 ? "double" : "single";
 }
 
 template <class T>

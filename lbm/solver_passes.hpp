@@ -10,20 +10,23 @@
 
 namespace lbdem::lbm {
 
-template <class Fn>
-void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
+template <class T, class Fn>
+void LbmSolver::with_forcing(const LatticeFields<T>& lat, Fn&& fn, bool accumulate) const {
   const Vec3& b = settings_.body_force;
   const CellForce uniform{b.x(), b.y(), b.z()};
+  const bool field = !lat.force[0].empty();
   if (has_porosity()) {
     const auto porous = [&](auto applied) {
       using Base = decltype(applied);
       const auto with_beta = [&]<bool kF>() {
-        if (accumulate && has_velocity_sum()) {
-          PorousMedium<Base, true, kF> policy{applied, inv_eps_.data(), alpha_.data(), beta_};
-          for (int a = 0; a < 3; ++a) policy.u_sum[a] = u_sum_[std::size_t(a)].data();
+        if (accumulate && !lat.u_sum[0].empty()) {
+          PorousMedium<T, Base, true, kF> policy{applied, lat.inv_eps.data(), lat.alpha.data(),
+                                                 beta_};
+          for (int a = 0; a < 3; ++a) policy.u_sum[a] = lat.u_sum[std::size_t(a)].data();
           fn(policy);
         } else {
-          fn(PorousMedium<Base, false, kF>{applied, inv_eps_.data(), alpha_.data(), beta_});
+          fn(PorousMedium<T, Base, false, kF>{applied, lat.inv_eps.data(), lat.alpha.data(),
+                                              beta_});
         }
       };
       if (beta_ > 0)
@@ -31,12 +34,12 @@ void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
       else
         with_beta.template operator()<false>();
     };
-    if (has_force_field())
-      porous(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
+    if (field)
+      porous(FieldForce{lat.force[0].data(), lat.force[1].data(), lat.force[2].data(), uniform});
     else
       porous(UniformForce{uniform});
-  } else if (has_force_field())
-    fn(FieldForce{force_[0].data(), force_[1].data(), force_[2].data(), uniform});
+  } else if (field)
+    fn(FieldForce{lat.force[0].data(), lat.force[1].data(), lat.force[2].data(), uniform});
   else if (!b.isZero())
     fn(UniformForce{uniform});
   else
@@ -45,18 +48,18 @@ void LbmSolver::with_forcing(Fn&& fn, bool accumulate) const {
 
 template <class Op>
 void LbmSolver::collide_pass(const Op& op) {
-  with_forcing(
-      [&](const auto& forcing) {
-        const auto collide = [&](const auto& policy) {
-          with_pdf([&](auto& pdf) { stream_collide(pdf, state_, op, policy, &runs_); });
-        };
-        if (cell_moments_[0].empty()) return collide(forcing);
-        const MomentFields out{
-            cell_moments_[0].data(),
-            {cell_moments_[1].data(), cell_moments_[2].data(), cell_moments_[3].data()}};
-        collide(StoreMoments<std::decay_t<decltype(forcing)>>{forcing, out});
-      },
-      true);
+  with_lattice([&](auto& lat) {
+    using T = typename std::decay_t<decltype(lat)>::value_type;
+    with_forcing(
+        lat,
+        [&](const auto& forcing) {
+          if (!keep_moments_) return stream_collide(lat.pdf, state_, op, forcing, &runs_);
+          const StoreMoments<std::decay_t<decltype(forcing)>, T> store{forcing,
+                                                                       lat.moment_fields()};
+          stream_collide(lat.pdf, state_, op, store, &runs_);
+        },
+        true);
+  });
 }
 
 // The regularized LES pass is compiled in collide_les.cpp only (with wider vectors; see there).

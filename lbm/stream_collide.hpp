@@ -31,19 +31,20 @@ namespace lbdem::lbm {
 /// Collides `count` consecutive cells of a row: cell i reads f_q at in[q][i] and writes f_q* to
 /// out[q][i]; n0 is the storage index of cell 0 (for the per-cell force). The loop is vectorised
 /// across cells; with the AA addresses in and out may overlap, but only within one cell, which
-/// reads all 19 values before it writes any, so `omp simd` is safe.
+/// reads all 19 values before it writes any, so `omp simd` is safe. The arithmetic runs in the
+/// storage type T on the slots as stored: double f_q, or float f_q - w_q (pdf_field.hpp), which
+/// the operators and forcing policies take as shifted (cell.hpp): no conversion per population.
 template <CollisionOperator C, class Forcing, class T>
 inline void collide_cells(const C& coll, const Forcing& forcing, const T* const (&in)[kQ],
                           T* const (&out)[kQ], Index n0, int count) {
-  using Codec = PopulationCodec<T>;
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
-    double f[kQ];
-    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = Codec::load(in[q][i], q); });
-    CellForce force;
-    const CellMoments m = forcing.moments(f, n0 + i, force);
+    T f[kQ];
+    static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = in[q][i]; });
+    CellForceT<T> force;
+    const CellMomentsT<T> m = forcing.moments(f, n0 + i, force);
     coll.template relax<Forcing::kActive>(f, m, force);
-    static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = Codec::store(f[q], q); });
+    static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = f[q]; });
   }
 }
 

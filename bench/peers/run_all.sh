@@ -61,7 +61,7 @@ if [[ " $SECTIONS " == *" stream "* ]]; then
     bw=$(printf '%s\n' "${vals[@]}" | median)
     row stream "triad a=b+s*c, 3 x 358 MB doubles, best/10" "$t" "$bw" "GB/s" "${vals[*]}"
     row roofline "D3Q19 double, 304 B/cell = bw/304" "$t" "$(awk -v b="$bw" 'BEGIN{printf "%.1f", b*1e3/304}')" "MLUPS (bound)" ""
-    row roofline "D3Q19 float, 152 B/cell = bw/152" "$t" "$(awk -v b="$bw" 'BEGIN{printf "%.1f", b*1e3/152}')" "MLUPS (bound)" ""
+    row roofline "D3Q19 single, 152 B/cell = bw/152" "$t" "$(awk -v b="$bw" 'BEGIN{printf "%.1f", b*1e3/152}')" "MLUPS (bound)" ""
   done
 fi
 

@@ -152,11 +152,13 @@ constexpr std::size_t kFlatChunk = 64;
 
 // The run's kernel on double populations: from[m][j] holds f_q* of link m of cell j, to[m][j]
 // receives the reflected value. Not inlined, so that it is compiled (and vectorised) once for both
-// storages: inlined into the float caller, GCC 12 left its cell loop scalar.
+// storages: inlined into the float caller, GCC 12 left its cell loop scalar. M: the precision of
+// the stored moments (the lattice's).
+template <class M>
 [[gnu::noinline]] WallLoad flat_run_kernel(const double* const (&from)[5], double* const (&to)[5],
                                            BounceBackLinks& links, const WallFunctionCells& cells,
                                            std::size_t u, const WernerWengleCell& law,
-                                           const MomentFields& moments, double rho_w,
+                                           const MomentFields<M>& moments, double rho_w,
                                            const Vec3& origin) {
   const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
   const std::size_t k0 = cells.first[i0];
@@ -175,8 +177,8 @@ constexpr std::size_t kFlatChunk = 64;
                tz = nrm.z() == 0 ? 1.0 : 0.0;
   const double pinv = 3.0 / rho_w;  // (M_t / rho_w)^-1 = 3 I on a flat face, over rho_w
   const double tiny = 1e-300;
-  const double* rho = moments.rho + c0;
-  const double *ux = moments.u[0] + c0, *uy = moments.u[1] + c0, *uz = moments.u[2] + c0;
+  const M* rho = moments.rho + c0;
+  const M *ux = moments.u[0] + c0, *uy = moments.u[1] + c0, *uz = moments.u[2] + c0;
 
   Vec3 force_sum = Vec3::Zero(), torque_sum = Vec3::Zero();
   double mass_sum = 0.0;
@@ -251,7 +253,7 @@ constexpr std::size_t kFlatChunk = 64;
 template <class T>
 WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                         const WallFunctionCells& cells, std::size_t u, const WernerWengleCell& law,
-                        const MomentFields& moments, double rho_w, const Vec3& origin) {
+                        const MomentFields<T>& moments, double rho_w, const Vec3& origin) {
   const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
   const std::size_t k0 = cells.first[i0];
   const double* from[5];
@@ -290,7 +292,7 @@ WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
 template <class T>
 WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
-                             const MomentFields& moments, double rho_w, const Vec3& origin) {
+                             const MomentFields<T>& moments, double rho_w, const Vec3& origin) {
   using Codec = PopulationCodec<T>;
   const WernerWengleCell cell_law(law);
   // One cell, any staircase shape.
@@ -313,7 +315,7 @@ WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& lin
       // The cell's density and velocity as its collision this step saw them.
       const std::size_t c = std::size_t(cells.cell[i]);
       const double rho = moments.rho[c];
-      const Vec3 u(moments.u[0][c], moments.u[1][c], moments.u[2][c]);
+      const Vec3 u(double(moments.u[0][c]), double(moments.u[1][c]), double(moments.u[2][c]));
       const Vec3& n = cells.normal[i];
       const Vec3 ut = u - u.dot(n) * n;
       const double speed = ut.norm();
@@ -374,9 +376,9 @@ WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& lin
 
 template WallLoad apply_wall_function(PdfField<double>&, AaState, BounceBackLinks&,
                                       const WallFunctionCells&, const WernerWengle&,
-                                      const MomentFields&, double, const Vec3&);
+                                      const MomentFields<double>&, double, const Vec3&);
 template WallLoad apply_wall_function(PdfField<float>&, AaState, BounceBackLinks&,
                                       const WallFunctionCells&, const WernerWengle&,
-                                      const MomentFields&, double, const Vec3&);
+                                      const MomentFields<float>&, double, const Vec3&);
 
 }  // namespace lbdem::lbm

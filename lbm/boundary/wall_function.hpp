@@ -114,7 +114,7 @@ WallFunctionCells build_wall_function_cells(const BounceBackLinks& links, bool f
 template <class T>
 WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
-                             const MomentFields& moments, double rho_w,
+                             const MomentFields<T>& moments, double rho_w,
                              const Vec3& origin = Vec3::Zero());
 
 }  // namespace lbdem::lbm

@@ -25,24 +25,31 @@ struct Bgk {
   double viscosity() const { return viscosity_from_tau(1.0 / omega); }
 
   // always_inline: see regularized_les.hpp (a call left in the omp simd cell loop runs scalar).
-  template <bool kForced>
-  [[gnu::always_inline]] void relax(double (&f)[kQ], const CellMoments& m,
-                                    const CellForce& force) const {
+  // R: double on f_q, float on f_q - w_q (cell.hpp, kShifted), where the equilibrium is formed
+  // shifted: w_q (drho + rho (3 c.u + ...)).
+  template <bool kForced, class R>
+  [[gnu::always_inline]] void relax(R (&f)[kQ], const CellMomentsT<R>& m,
+                                    const CellForceT<R>& force) const {
+    const R om = R(omega);
     // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
-    const double usq = 1.5 * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
-    const double q2 = 4.5 * m.inv_eps;
-    const double usq_e = usq * m.inv_eps;
-    [[maybe_unused]] const double source = 1.0 - 0.5 * omega;
-    [[maybe_unused]] const double uf =
-        3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    const R usq = R(1.5) * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);  // u^2 / (2 c_s^2)
+    const R q2 = R(4.5) * m.inv_eps;
+    const R usq_e = usq * m.inv_eps;
+    [[maybe_unused]] const R source = R(1) - R(0.5) * om;
+    [[maybe_unused]] const R uf =
+        R(3) * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
     static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
-      const double cu = dot_c<q>(m.ux, m.uy, m.uz);
-      const double feq = kW[q] * m.rho * (1.0 + 3.0 * cu + q2 * cu * cu - usq_e);
-      double post = f[q] + omega * (feq - f[q]);
+      const R cu = dot_c<q>(m.ux, m.uy, m.uz);
+      R feq;
+      if constexpr (kShifted<R>)
+        feq = R(kW[q]) * (m.drho + m.rho * (R(3) * cu + q2 * cu * cu - usq_e));
+      else
+        feq = kW[q] * m.rho * (1.0 + 3.0 * cu + q2 * cu * cu - usq_e);
+      R post = f[q] + om * (feq - f[q]);
       if constexpr (kForced) {
-        const double cf = dot_c<q>(force.fx, force.fy, force.fz);
-        post += source * kW[q] * (3.0 * cf - uf + 2.0 * q2 * cu * cf);
+        const R cf = dot_c<q>(force.fx, force.fy, force.fz);
+        post += source * R(kW[q]) * (R(3) * cf - uf + R(2) * q2 * cu * cf);
       }
       f[q] = post;
     });

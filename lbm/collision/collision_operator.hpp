@@ -2,7 +2,8 @@
 // What the stream-collide kernel needs from a collision operator (waLBerla's prose "lattice model"
 // contract, as a C++20 concept). An operator is a small value type holding its rates; its relax()
 // takes the 19 pre-collision populations of one cell, their moments (u already Guo-shifted) and the
-// cell's force, and overwrites f with the post-collision populations including the forcing source.
+// cell's force, and overwrites f with the post-collision populations including the forcing source,
+// in double on f_q and in float on f_q - w_q (cell.hpp).
 // relax<false> must not read the force: the kernel passes zeros and relies on the terms vanishing.
 //
 // A new operator (regularized or MRT with a Smagorinsky eddy viscosity) is one more
@@ -18,10 +19,14 @@ namespace lbdem::lbm {
 
 template <class C>
 concept CollisionOperator = std::copyable<C> &&
-    requires(const C& c, double (&f)[kQ], const CellMoments& m, const CellForce& force) {
+    requires(const C& c, double (&f)[kQ], const CellMoments& m, const CellForce& force,
+             float (&fs)[kQ], const CellMomentsT<float>& ms, const CellForceT<float>& forces) {
   { C::name } -> std::convertible_to<std::string_view>;
   c.template relax<false>(f, m, force);
   c.template relax<true>(f, m, force);
+  // Single precision: shifted populations f_q - w_q (cell.hpp, kShifted).
+  c.template relax<false>(fs, ms, forces);
+  c.template relax<true>(fs, ms, forces);
   /// Kinematic shear viscosity [lattice units], nu = c_s^2 (1/omega_+ - 1/2).
   { c.viscosity() } -> std::convertible_to<double>;
 };

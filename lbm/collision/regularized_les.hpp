@@ -57,13 +57,18 @@ struct RegularizedLes {
   /// Molecular viscosity; the eddy part is per cell (eddy_viscosity()).
   double viscosity() const { return viscosity_from_tau(tau0); }
 
-  /// Non-equilibrium stress Pi of a cell (pre-collision f, m with Guo-shifted u).
-  struct Stress {
-    double xx, yy, zz, xy, xz, yz;
+  /// Non-equilibrium stress Pi of a cell (pre-collision f, m with Guo-shifted u). Shifted
+  /// populations (float, cell.hpp) give sum_q c c (f_q - w_q) = sum_q c c f_q - c_s^2 I, so the
+  /// diagonal subtracts drho c_s^2 instead of rho c_s^2.
+  template <class R>
+  struct StressT {
+    R xx, yy, zz, xy, xz, yz;
   };
-  [[gnu::always_inline]] static Stress non_equilibrium_stress(const double (&f)[kQ],
-                                                              const CellMoments& m) {
-    Stress s{-0.0, -0.0, -0.0, -0.0, -0.0, -0.0};
+  using Stress = StressT<double>;
+  template <class R>
+  [[gnu::always_inline]] static StressT<R> non_equilibrium_stress(const R (&f)[kQ],
+                                                                  const CellMomentsT<R>& m) {
+    StressT<R> s{-0.0, -0.0, -0.0, -0.0, -0.0, -0.0};
     static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
       constexpr int cx = kCx[q], cy = kCy[q], cz = kCz[q];
@@ -78,7 +83,7 @@ struct RegularizedLes {
       if constexpr (cy * cz == -1) s.yz -= f[q];
     });
     // Pi^eq = rho c_s^2 I + rho u u / eps.
-    const double ru = m.rho * m.inv_eps, p = m.rho * kCs2;
+    const R ru = m.rho * m.inv_eps, p = (kShifted<R> ? m.drho : m.rho) * R(kCs2);
     s.xx -= p + ru * m.ux * m.ux;
     s.yy -= p + ru * m.uy * m.uy;
     s.zz -= p + ru * m.uz * m.uz;
@@ -88,13 +93,14 @@ struct RegularizedLes {
     return s;
   }
 
-  /// tau of the cell from Pi (Hou et al. 1996; header comment), with the Guo correction if forced.
-  template <bool kForced>
-  [[gnu::always_inline]] double local_tau(const Stress& s, const CellMoments& m,
-                                          const CellForce& force) const {
-    double xx = s.xx, yy = s.yy, zz = s.zz, xy = s.xy, xz = s.xz, yz = s.yz;
+  /// X = 18 sqrt(2) C_s^2 |Pi^c| / rho of the cell (header comment), with the Guo correction of Pi
+  /// if forced.
+  template <bool kForced, class R>
+  [[gnu::always_inline]] R eddy_term(const StressT<R>& s, const CellMomentsT<R>& m,
+                                     const CellForceT<R>& force) const {
+    R xx = s.xx, yy = s.yy, zz = s.zz, xy = s.xy, xz = s.xz, yz = s.yz;
     if constexpr (kForced) {
-      const double e = m.inv_eps, h = 0.5 * m.inv_eps;
+      const R e = m.inv_eps, h = R(0.5) * m.inv_eps;
       xx += e * m.ux * force.fx;
       yy += e * m.uy * force.fy;
       zz += e * m.uz * force.fz;
@@ -102,14 +108,20 @@ struct RegularizedLes {
       xz += h * (m.ux * force.fz + m.uz * force.fx);
       yz += h * (m.uy * force.fz + m.uz * force.fy);
     }
-    const double norm =
-        std::sqrt(xx * xx + yy * yy + zz * zz + 2.0 * (xy * xy + xz * xz + yz * yz));
-    // The root (tau0 + sqrt(tau0^2 + X)) / 2, X = 18 sqrt(2) C_s^2 |Pi^c| / rho: a sum of two
-    // positive numbers, so without cancellation, and exactly tau0 at X = 0 (the correctly rounded
-    // square root of the rounded tau0^2 is tau0 in IEEE binary arithmetic). One division per cell
-    // fewer than the form tau0 + X / (2 (tau0 + sqrt(...))), which differs from it by round-off.
-    const double x = 18.0 * std::sqrt(2.0) * smagorinsky * smagorinsky * norm * m.inv_rho;
-    return 0.5 * (tau0 + std::sqrt(tau0 * tau0 + x));
+    const R norm = std::sqrt(xx * xx + yy * yy + zz * zz + R(2) * (xy * xy + xz * xz + yz * yz));
+    return R(18.0 * std::sqrt(2.0) * smagorinsky * smagorinsky) * norm * m.inv_rho;
+  }
+
+  /// tau of the cell from Pi (Hou et al. 1996; header comment), with the Guo correction if forced.
+  /// The root (tau0 + sqrt(tau0^2 + X)) / 2: a sum of two positive numbers, so without
+  /// cancellation, and exactly tau0 at X = 0 (the correctly rounded square root of the rounded
+  /// tau0^2 is tau0 in IEEE binary arithmetic). One division per cell fewer than the form
+  /// tau0 + X / (2 (tau0 + sqrt(...))), which differs from it by round-off.
+  template <bool kForced, class R>
+  [[gnu::always_inline]] R local_tau(const StressT<R>& s, const CellMomentsT<R>& m,
+                                     const CellForceT<R>& force) const {
+    const R t0 = R(tau0), x = eddy_term<kForced>(s, m, force);
+    return R(0.5) * (t0 + std::sqrt(t0 * t0 + x));
   }
 
   /// Effective tau = tau0 + nu_t / c_s^2 of a cell from its pre-collision populations; m must be
@@ -126,45 +138,80 @@ struct RegularizedLes {
 
   // always_inline: GCC 12 otherwise leaves relax() a call inside the `omp simd` cell loop
   // (stream_collide.hpp), which then runs scalar: 17 against 21 MLUPS on a 64^3 box, and 38 once
-  // -fno-math-errno lets std::sqrt vectorise too.
-  template <bool kForced>
-  [[gnu::always_inline]] void relax(double (&f)[kQ], const CellMoments& m,
-                                    const CellForce& force) const {
-    const Stress s = non_equilibrium_stress(f, m);
-    const double omega = 1.0 / local_tau<kForced>(s, m, force);
+  // -fno-math-errno lets std::sqrt vectorise too. R: double on f_q, float on f_q - w_q (cell.hpp).
+  template <bool kForced, class R>
+  [[gnu::always_inline]] void relax(R (&f)[kQ], const CellMomentsT<R>& m,
+                                    const CellForceT<R>& force) const {
+    const StressT<R> s = non_equilibrium_stress(f, m);
     // (1 - omega) w_q Q_q:Pi / (2 c_s^4) = w_q [a_q - b] with a_q = 4.5 (1 - omega) c c : Pi and
     // b = 1.5 (1 - omega) tr Pi.
-    const double r = 4.5 * (1.0 - omega);
-    const double pxx = r * s.xx, pyy = r * s.yy, pzz = r * s.zz;
-    const double pxy = 2.0 * r * s.xy, pxz = 2.0 * r * s.xz, pyz = 2.0 * r * s.yz;
-    const double b = (pxx + pyy + pzz) * kCs2;
-    const double usq = 1.5 * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
-    const double quad = 4.5 * m.inv_eps;
-    [[maybe_unused]] const double source = 1.0 - 0.5 * omega;
-    [[maybe_unused]] const double uf =
-        3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    R pxx, pyy, pzz, pxy, pxz, pyz, source;
+    // v -> (1 - omega) v. In float, tau0 near 1/2 (the jet mill's tau0 - 1/2 = 3.75e-5) would
+    // quantise: omega = 1/tau near 2 and 1 - omega near -1 hold the viscosity in their last bits
+    // (float's 6e-8 of 1 against 2 (tau - 1/2) = 7.5e-5: 8e-4 of nu0). So single precision carries
+    // tau - 1/2 = (tau0 - 1/2) + X / (2 (sqrt(tau0^2 + X) + tau0)) from the exact tau0 - 1/2, and
+    // kappa = 2 - omega = 2 (tau - 1/2) / tau, with (1 - omega) v = kappa v - v and
+    // 1 - omega/2 = kappa/2: the viscosity to float's relative 6e-8 at any tau0.
+    [[maybe_unused]] R omega, kappa;
+    if constexpr (kShifted<R>) {
+      const R t0 = R(tau0), x = eddy_term<kForced>(s, m, force);
+      const R d = R(tau0 - 0.5) + x / (R(2) * (std::sqrt(t0 * t0 + x) + t0));
+      kappa = R(2) * d / (R(0.5) + d);
+      const R k45 = R(4.5) * kappa, k9 = R(9) * kappa;
+      pxx = k45 * s.xx - R(4.5) * s.xx;
+      pyy = k45 * s.yy - R(4.5) * s.yy;
+      pzz = k45 * s.zz - R(4.5) * s.zz;
+      pxy = k9 * s.xy - R(9) * s.xy;
+      pxz = k9 * s.xz - R(9) * s.xz;
+      pyz = k9 * s.yz - R(9) * s.yz;
+      source = R(0.5) * kappa;
+    } else {
+      omega = R(1) / local_tau<kForced>(s, m, force);
+      const R r = R(4.5) * (R(1) - omega);
+      pxx = r * s.xx;
+      pyy = r * s.yy;
+      pzz = r * s.zz;
+      pxy = R(2) * r * s.xy;
+      pxz = R(2) * r * s.xz;
+      pyz = R(2) * r * s.yz;
+      source = R(1) - R(0.5) * omega;
+    }
+    const R b = (pxx + pyy + pzz) * R(kCs2);
+    const R usq = R(1.5) * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+    const R quad = R(4.5) * m.inv_eps;
+    [[maybe_unused]] const R uf =
+        R(3) * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
     // With a force, f^neq also has a first moment, j - rho u (-F/2 for Guo's u): kept, relaxed
     // with (1 - omega) as in BGK, so that momentum gains (1 - omega/2) F + omega (rho u - j) = F
     // whatever the definition of u. Unforced it is round-off and left out.
-    [[maybe_unused]] double gx = 0, gy = 0, gz = 0;  // 3 (1 - omega) (j - rho u) + 3 source F
+    [[maybe_unused]] R gx = 0, gy = 0, gz = 0;  // 3 (1 - omega) (j - rho u) + 3 source F
     if constexpr (kForced) {
-      double jx = -0.0, jy = -0.0, jz = -0.0;
+      R jx = -0.0, jy = -0.0, jz = -0.0;
       static_for<kQ>([&](auto qc) LBDEM_INLINE {
         constexpr int q = decltype(qc)::value;
-        if constexpr (kCx[q] != 0) jx += kCx[q] * f[q];
-        if constexpr (kCy[q] != 0) jy += kCy[q] * f[q];
-        if constexpr (kCz[q] != 0) jz += kCz[q] * f[q];
+        if constexpr (kCx[q] != 0) jx += R(kCx[q]) * f[q];
+        if constexpr (kCy[q] != 0) jy += R(kCy[q]) * f[q];
+        if constexpr (kCz[q] != 0) jz += R(kCz[q]) * f[q];
       });
-      const double a = 3.0 * (1.0 - omega), c = 3.0 * source;
-      gx = a * (jx - m.rho * m.ux) + c * force.fx;
-      gy = a * (jy - m.rho * m.uy) + c * force.fy;
-      gz = a * (jz - m.rho * m.uz) + c * force.fz;
+      const R c = R(3) * source;
+      if constexpr (kShifted<R>) {
+        const R k3 = R(3) * kappa;
+        const R dx = jx - m.rho * m.ux, dy = jy - m.rho * m.uy, dz = jz - m.rho * m.uz;
+        gx = (k3 * dx - R(3) * dx) + c * force.fx;
+        gy = (k3 * dy - R(3) * dy) + c * force.fy;
+        gz = (k3 * dz - R(3) * dz) + c * force.fz;
+      } else {
+        const R a = R(3) * (R(1) - omega);
+        gx = a * (jx - m.rho * m.ux) + c * force.fx;
+        gy = a * (jy - m.rho * m.uy) + c * force.fy;
+        gz = a * (jz - m.rho * m.uz) + c * force.fz;
+      }
     }
     static_for<kQ>([&](auto qc) LBDEM_INLINE {
       constexpr int q = decltype(qc)::value;
       constexpr int cx = kCx[q], cy = kCy[q], cz = kCz[q];
-      const double cu = dot_c<q>(m.ux, m.uy, m.uz);
-      double neq = -b;
+      const R cu = dot_c<q>(m.ux, m.uy, m.uz);
+      R neq = -b;
       if constexpr (cx != 0) neq += pxx;
       if constexpr (cy != 0) neq += pyy;
       if constexpr (cz != 0) neq += pzz;
@@ -174,10 +221,14 @@ struct RegularizedLes {
       if constexpr (cx * cz == -1) neq -= pxz;
       if constexpr (cy * cz == 1) neq += pyz;
       if constexpr (cy * cz == -1) neq -= pyz;
-      double post = kW[q] * (m.rho * (1.0 + 3.0 * cu + quad * cu * cu - usq) + neq);
+      R post;
+      if constexpr (kShifted<R>)
+        post = R(kW[q]) * (m.drho + m.rho * (R(3) * cu + quad * cu * cu - usq) + neq);
+      else
+        post = kW[q] * (m.rho * (1.0 + 3.0 * cu + quad * cu * cu - usq) + neq);
       if constexpr (kForced) {
-        const double cf = dot_c<q>(force.fx, force.fy, force.fz);
-        post += kW[q] * (dot_c<q>(gx, gy, gz) + source * (9.0 * m.inv_eps * cu * cf - uf));
+        const R cf = dot_c<q>(force.fx, force.fy, force.fz);
+        post += R(kW[q]) * (dot_c<q>(gx, gy, gz) + source * (R(9) * m.inv_eps * cu * cf - uf));
       }
       f[q] = post;
     });

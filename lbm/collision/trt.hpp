@@ -35,32 +35,43 @@ struct Trt {
   double viscosity() const { return viscosity_from_tau(1.0 / omega_plus); }
 
   // always_inline: see regularized_les.hpp (a call left in the omp simd cell loop runs scalar).
-  template <bool kForced>
-  [[gnu::always_inline]] void relax(double (&f)[kQ], const CellMoments& m,
-                                    const CellForce& force) const {
+  // R: double on f_q, float on f_q - w_q (cell.hpp, kShifted), where the even equilibrium is
+  // formed shifted: w_q (drho + rho (...)); the odd part and the sources do not change.
+  template <bool kForced, class R>
+  [[gnu::always_inline]] void relax(R (&f)[kQ], const CellMomentsT<R>& m,
+                                    const CellForceT<R>& force) const {
+    const R op = R(omega_plus), om = R(omega_minus);
     // Terms of second order in u carry 1/eps (porous form, forcing/porous.hpp; 1 otherwise).
-    const double usq = 1.5 * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
-    const double q2 = 4.5 * m.inv_eps;
-    [[maybe_unused]] const double src_p = 1.0 - 0.5 * omega_plus;
-    [[maybe_unused]] const double src_m = 1.0 - 0.5 * omega_minus;
-    [[maybe_unused]] const double uf =
-        3.0 * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
+    const R usq = R(1.5) * m.inv_eps * (m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+    const R q2 = R(4.5) * m.inv_eps;
+    [[maybe_unused]] const R src_p = R(1) - R(0.5) * op;
+    [[maybe_unused]] const R src_m = R(1) - R(0.5) * om;
+    [[maybe_unused]] const R uf =
+        R(3) * m.inv_eps * (m.ux * force.fx + m.uy * force.fy + m.uz * force.fz);
     // Rest population: even only.
-    double d0 = omega_plus * (f[0] - kW[0] * m.rho * (1.0 - usq));
-    if constexpr (kForced) d0 += src_p * kW[0] * uf;
+    R d0;
+    if constexpr (kShifted<R>)
+      d0 = op * (f[0] - R(kW[0]) * (m.drho - m.rho * usq));
+    else
+      d0 = op * (f[0] - kW[0] * m.rho * (1.0 - usq));
+    if constexpr (kForced) d0 += src_p * R(kW[0]) * uf;
     f[0] -= d0;
     // Pairs (q, q + 1) with c_{q+1} = -c_q (d3q19.hpp).
     static_for<(kQ - 1) / 2>([&](auto kc) LBDEM_INLINE {
       constexpr int q = 2 * decltype(kc)::value + 1, o = q + 1;
-      const double cu = dot_c<q>(m.ux, m.uy, m.uz);
-      const double eq_p = kW[q] * m.rho * (1.0 + q2 * cu * cu - usq);
-      const double eq_m = kW[q] * m.rho * 3.0 * cu;
-      double dp = omega_plus * (0.5 * (f[q] + f[o]) - eq_p);
-      double dm = omega_minus * (0.5 * (f[q] - f[o]) - eq_m);
+      const R cu = dot_c<q>(m.ux, m.uy, m.uz);
+      R eq_p;
+      if constexpr (kShifted<R>)
+        eq_p = R(kW[q]) * (m.drho + m.rho * (q2 * cu * cu - usq));
+      else
+        eq_p = kW[q] * m.rho * (1.0 + q2 * cu * cu - usq);
+      const R eq_m = R(kW[q]) * m.rho * R(3) * cu;
+      R dp = op * (R(0.5) * (f[q] + f[o]) - eq_p);
+      R dm = om * (R(0.5) * (f[q] - f[o]) - eq_m);
       if constexpr (kForced) {
-        const double cf = dot_c<q>(force.fx, force.fy, force.fz);
-        dp -= src_p * kW[q] * (2.0 * q2 * cu * cf - uf);
-        dm -= src_m * kW[q] * 3.0 * cf;
+        const R cf = dot_c<q>(force.fx, force.fy, force.fz);
+        dp -= src_p * R(kW[q]) * (R(2) * q2 * cu * cf - uf);
+        dm -= src_m * R(kW[q]) * R(3) * cf;
       }
       f[q] -= dp + dm;
       f[o] -= dp - dm;

@@ -20,8 +20,9 @@ namespace lbdem::lbm {
 /// No force: the kernel's forcing terms vanish at compile time.
 struct NoForce {
   static constexpr bool kActive = false;
-  CellForce at(Index) const { return {}; }
-  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index, CellForce& force) const {
+  template <class R>
+  [[gnu::always_inline]] CellMomentsT<R> moments(const R (&f)[kQ], Index,
+                                                 CellForceT<R>& force) const {
     force = {};
     return cell_moments<false>(f, force);
   }
@@ -32,27 +33,35 @@ struct UniformForce {
   static constexpr bool kActive = true;
   CellForce force;
   CellForce at(Index) const { return force; }
-  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index, CellForce& out) const {
-    out = force;
+  template <class R>
+  [[gnu::always_inline]] CellMomentsT<R> moments(const R (&f)[kQ], Index,
+                                                 CellForceT<R>& out) const {
+    out = {R(force.fx), R(force.fy), R(force.fz)};
     return cell_moments<true>(f, out);
   }
 };
 
-/// A per-cell force density (SoA over storage cells, e.g. the reaction of particle drag) plus a
-/// uniform part.
+/// A per-cell force density (SoA over storage cells, e.g. the reaction of particle drag) in the
+/// lattice's precision S, plus a uniform part.
+template <class S>
 struct FieldForce {
   static constexpr bool kActive = true;
-  const double* fx;
-  const double* fy;
-  const double* fz;
+  const S* fx;
+  const S* fy;
+  const S* fz;
   CellForce uniform;
-  CellForce at(Index n) const {
-    return {uniform.fx + fx[n], uniform.fy + fy[n], uniform.fz + fz[n]};
+  template <class R>
+  [[gnu::always_inline]] CellForceT<R> force_at(Index n) const {
+    return {R(uniform.fx) + R(fx[n]), R(uniform.fy) + R(fy[n]), R(uniform.fz) + R(fz[n])};
   }
-  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index n, CellForce& out) const {
-    out = at(n);
+  template <class R>
+  [[gnu::always_inline]] CellMomentsT<R> moments(const R (&f)[kQ], Index n,
+                                                 CellForceT<R>& out) const {
+    out = force_at<R>(n);
     return cell_moments<true>(f, out);
   }
 };
+template <class S>
+FieldForce(const S*, const S*, const S*, CellForce) -> FieldForce<S>;
 
 }  // namespace lbdem::lbm

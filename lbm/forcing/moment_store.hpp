@@ -12,26 +12,27 @@
 
 namespace lbdem::lbm {
 
-/// Per storage cell: rho and u / eps of the last collision.
+/// Per storage cell: rho and u / eps of the last collision, in the lattice's precision S.
+template <class S>
 struct MomentFields {
-  double* rho;
-  double* u[3];
+  S* rho;
+  S* u[3];
 };
 
-template <class Base>
+template <class Base, class S>
 struct StoreMoments {
   static constexpr bool kActive = Base::kActive;
   Base base;
-  MomentFields out;
+  MomentFields<S> out;
 
-  CellForce at(Index n) const { return base.at(n); }
-  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index n,
-                                             CellForce& force) const {
-    const CellMoments m = base.moments(f, n, force);
-    out.rho[n] = m.rho;
-    out.u[0][n] = m.ux * m.inv_eps;
-    out.u[1][n] = m.uy * m.inv_eps;
-    out.u[2][n] = m.uz * m.inv_eps;
+  template <class R>
+  [[gnu::always_inline]] CellMomentsT<R> moments(const R (&f)[kQ], Index n,
+                                                 CellForceT<R>& force) const {
+    const CellMomentsT<R> m = base.moments(f, n, force);
+    out.rho[n] = S(m.rho);
+    out.u[0][n] = S(m.ux * m.inv_eps);
+    out.u[1][n] = S(m.uy * m.inv_eps);
+    out.u[2][n] = S(m.uz * m.inv_eps);
     return m;
   }
 };

@@ -33,50 +33,51 @@
 
 namespace lbdem::lbm {
 
-/// Base: the applied-force policy (guo.hpp: UniformForce or FieldForce). kSum: add to the velocity
+/// Base: the applied-force policy (guo.hpp: UniformForce or FieldForce). S: the precision of the
+/// per-cell fields (the lattice's). kSum: add to the velocity
 /// sums; a compile-time choice, since a store under a run-time test kept GCC 12 from vectorising
 /// the cell loop (14 against 42 MLUPS, bench/lbm_bench --porous). kForchheimer = false drops the
 /// two square roots of |u| and of the quadratic's root (beta = 0 gives scale = 1 / (2 c0)
 /// exactly): the solver chooses it where beta = 0, which the coupling always has (cell.hpp: the
 /// divisions and roots of this kernel).
-template <class Base, bool kSum = false, bool kForchheimer = true>
+template <class S, class Base, bool kSum = false, bool kForchheimer = true>
 struct PorousMedium {
   static constexpr bool kActive = true;
   Base applied;
-  const double* inv_eps;  // 1 / fluid fraction per storage cell, >= 1 (stored: no division)
-  const double* alpha;    // Darcy drag mu eps / K per storage cell [lattice units], >= 0
-  double beta = 0;        // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
+  const S* inv_eps;  // 1 / fluid fraction per storage cell, >= 1 (stored: no division)
+  const S* alpha;    // Darcy drag mu eps / K per storage cell [lattice units], >= 0
+  double beta = 0;   // Forchheimer coefficient eps F_eps / sqrt(K) [1/cell], >= 0
   // With kSum, sums of the intrinsic velocity u / eps per storage cell (x, y, z), added to by every
   // collision that uses this policy (LbmSolver::enable_velocity_sum): the coupling's record of the
   // velocities the gas's drag acted on, without a second pass over the populations.
-  double* u_sum[3] = {nullptr, nullptr, nullptr};
+  S* u_sum[3] = {nullptr, nullptr, nullptr};
 
-  CellForce at(Index n) const { return applied.at(n); }
-  [[gnu::always_inline]] CellMoments moments(const double (&f)[kQ], Index n,
-                                             CellForce& force) const {
-    const CellForce g = applied.at(n);
-    CellMoments m = cell_moments<true>(f, g);  // u = v here
-    const double a = alpha[n] * m.inv_rho;     // GZ's rate eps nu / K
-    const double c0 = 0.5 * (1.0 + 0.5 * a);
-    double scale, rate;  // rate: alpha + beta |u| over rho
+  template <class R>
+  [[gnu::always_inline]] CellMomentsT<R> moments(const R (&f)[kQ], Index n,
+                                                 CellForceT<R>& force) const {
+    CellForceT<R> g;
+    CellMomentsT<R> m = applied.moments(f, n, g);  // u = v here
+    const R a = R(alpha[n]) * m.inv_rho;           // GZ's rate eps nu / K
+    const R c0 = R(0.5) * (R(1) + R(0.5) * a);
+    R scale, rate;  // rate: alpha + beta |u| over rho
     if constexpr (kForchheimer) {
-      const double v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
-      scale = 1.0 / (c0 + std::sqrt(c0 * c0 + 0.5 * beta * v));
-      rate = a + beta * v * scale;
+      const R v = std::sqrt(m.ux * m.ux + m.uy * m.uy + m.uz * m.uz);
+      scale = R(1) / (c0 + std::sqrt(c0 * c0 + R(0.5) * R(beta) * v));
+      rate = a + R(beta) * v * scale;
     } else {
-      scale = 1.0 / (2.0 * c0);
+      scale = R(1) / (R(2) * c0);
       rate = a;
     }
     m.ux *= scale;
     m.uy *= scale;
     m.uz *= scale;
-    m.inv_eps = inv_eps[n];
+    m.inv_eps = R(inv_eps[n]);
     if constexpr (kSum) {
-      u_sum[0][n] += m.ux * m.inv_eps;
-      u_sum[1][n] += m.uy * m.inv_eps;
-      u_sum[2][n] += m.uz * m.inv_eps;
+      u_sum[0][n] += S(m.ux * m.inv_eps);
+      u_sum[1][n] += S(m.uy * m.inv_eps);
+      u_sum[2][n] += S(m.uz * m.inv_eps);
     }
-    const double drag = m.rho * rate;  // rho (alpha + beta |u|)
+    const R drag = m.rho * rate;  // rho (alpha + beta |u|)
     force = {g.fx - drag * m.ux, g.fy - drag * m.uy, g.fz - drag * m.uz};
     return m;
   }

@@ -332,7 +332,20 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        "the wall function acts on every wall at rest, and face " +
                            std::string(lbm::BoxFaces::kNames[std::size_t(f)]) + " slips",
                        "drop fluid.wall_function, or make that face a no-slip wall");
-  c.population_storage = fluid.get_choice("population_storage", "double", {"double", "float"});
+  // Run folders written before fluid.precision carry population_storage: its float slots held
+  // f - w as single precision's do, so they resume as single; the old key leaves the input.
+  std::string precision_default = "double";
+  if (fluid.has("population_storage")) {
+    if (fluid.has("precision"))
+      throw InputError(fluid.path("population_storage"), "",
+                       "is the old name of fluid.precision, which is also given",
+                       "remove fluid.population_storage");
+    const std::string old =
+        fluid.detached().get_choice("population_storage", "double", {"double", "float"});
+    precision_default = old == "float" ? "single" : "double";
+    Config(fluid).erase(fluid.path("population_storage"));
+  }
+  c.precision = fluid.get_choice("precision", precision_default, {"double", "single"});
   // A parameter of another operator would be silently ignored: say so.
   if (fluid.has("magic") && c.collision != "trt")
     throw InputError(fluid.path("magic"), "", "only used by fluid.collision = \"trt\"",
@@ -446,8 +459,7 @@ lbm::LbmSettings FluidConfig::lattice() const {
   else
     s.collision = lbm::RegularizedLes::from_tau(tau, smagorinsky);
   for (int a = 0; a < 3; ++a) s.body_force[a] = u.force_density_to_lattice(body_force[a]);
-  s.storage = population_storage == "float" ? lbm::PopulationStorage::float32
-                                            : lbm::PopulationStorage::float64;
+  s.precision = precision == "single" ? lbm::Precision::float32 : lbm::Precision::float64;
   return s;
 }
 
@@ -511,8 +523,8 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
   log.derived("cells per axis", f.cells[0], "",
               "x " + std::to_string(f.cells[1]) + " x " + std::to_string(f.cells[2]) + " = " +
                   to_text(n) + " cells, " +
-                  to_text(n * (f.population_storage == "float" ? 76e-6 : 152e-6)) + " MB of " +
-                  f.population_storage + " populations");
+                  to_text(n * (f.precision == "single" ? 76e-6 : 152e-6)) + " MB of " +
+                  f.precision + " populations");
   log.derived("cell size dx", f.dx, "m");
   // Edges that are not whole cells: where the gas walls sit against the particles' (cells_along),
   // in mm for the cells of beds and mills, in m for larger ones.

@@ -16,8 +16,8 @@
 //   collision = "trt" (magic, default 3/16) | "bgk" | "les" (smagorinsky, default 0.1),
 //   wall_function (false; true: Werner-Wengle's law of the wall on every wall at rest, for LES
 //   whose first cell lies outside the viscous sublayer; lbm/boundary/wall_function.hpp),
-//   population_storage = "double" (default) | "float" (f - w in float, arithmetic in double:
-//   half the memory and the kernel's traffic; lbm/pdf_field.hpp),
+//   precision = "double" (default) | "single" (populations f - w, the kernel's per-cell fields
+//   and its arithmetic in float: half the memory and the kernel's traffic; lbm/cell.hpp),
 //   body_force [N/m^3], gravity (true: + physics.gravity x density), initial_velocity [m/s],
 //   [fluid.faces] x_lo .. z_hi = "wall" | "free_slip" | "periodic" |
 //   {kind = "wall", slip_length = b [m]} (Navier slip; 0 no slip) |
@@ -69,7 +69,7 @@ struct FluidConfig {
   std::string collision = "trt";   // trt | bgk | les
   double magic = 0, smagorinsky = 0;
   bool wall_function = false;
-  std::string population_storage = "double";  // double | float (lbm/pdf_field.hpp)
+  std::string precision = "double";      // double | single (lbm/lattice_fields.hpp)
   Vec3 body_force = Vec3::Zero();        // total force density on the gas, gravity included [N/m^3]
   bool weighs = false;                   // body_force includes the gas's weight rho g
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]

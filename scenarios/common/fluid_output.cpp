@@ -134,10 +134,10 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
 
 void save_fluid(H5Out& f, const lbm::LbmSolver& s) {
   f.group("/fluid");
-  // The slots as stored (float: f - w, widened exactly). A build from before float storage cannot
-  // misread them: it rejects the run folder's fluid.population_storage key before loading.
+  // The slots as stored (single: f - w in float, widened exactly). A build from before single
+  // precision cannot misread them: it rejects the run folder's fluid.precision key before loading.
   f.write("/fluid/populations", s.stored_slots());
-  f.attr("population_storage", std::string(lbm::to_string(s.storage())), "/fluid");
+  f.attr("precision", std::string(lbm::to_string(s.precision())), "/fluid");
   f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");
   f.attr("steps", std::int64_t(s.steps()), "/fluid");
   f.attr("initial_mass", s.initial_mass(), "/fluid");
@@ -149,15 +149,19 @@ void load_fluid(const H5In& f, lbm::LbmSolver& s) {
     throw std::runtime_error(
         "the checkpoint holds no gas state (/fluid); was it written by a run "
         "without [fluid]?");
-  // Checkpoints from before float storage carry no attribute: they hold doubles.
-  const std::string stored = f.has_attr("population_storage", "/fluid")
-                                 ? f.attr_string("population_storage", "/fluid")
-                                 : std::string("double");
-  if (stored != lbm::to_string(s.storage()))
-    throw std::runtime_error("the checkpoint holds the gas populations in " + stored +
-                             ", this run stores them in " +
-                             std::string(lbm::to_string(s.storage())) +
-                             "; resume with fluid.population_storage = \"" + stored + "\"");
+  // Older checkpoints name the storage ("population_storage": float slots held f - w as single's
+  // do) or nothing (doubles).
+  std::string stored = "double";
+  if (f.has_attr("precision", "/fluid"))
+    stored = f.attr_string("precision", "/fluid");
+  else if (f.has_attr("population_storage", "/fluid") &&
+           f.attr_string("population_storage", "/fluid") == "float")
+    stored = "single";
+  if (stored != lbm::to_string(s.precision()))
+    throw std::runtime_error("the checkpoint holds the gas in " + stored +
+                             " precision, this run computes in " +
+                             std::string(lbm::to_string(s.precision())) +
+                             "; resume with fluid.precision = \"" + stored + "\"");
   s.load_state(f.doubles("/fluid/populations"),
                f.attr_int("aa_swapped", "/fluid") ? lbm::AaState::swapped : lbm::AaState::natural,
                long(f.attr_int("steps", "/fluid")));

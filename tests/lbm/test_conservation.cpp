@@ -32,7 +32,7 @@ double mass_drift(LbmSolver& lbm, int steps) {
 }
 
 /// A closed box with a sliding lid and a block inside.
-LbmSolver closed_box(PopulationStorage storage) {
+LbmSolver closed_box(Precision storage) {
   const int n = 16;
   LbmSettings s;
   s.nx = s.ny = s.nz = n;
@@ -40,7 +40,7 @@ LbmSolver closed_box(PopulationStorage storage) {
   // A lid sliding in its own plane: Ladd's terms of the links from one cell cancel in pairs.
   s.faces[5].wall_velocity = Vec3(0.05, 0.02, 0);
   s.collision = Bgk::from_tau(0.6);
-  s.storage = storage;
+  s.precision = storage;
   LbmSolver lbm(s);
   lbm.initialize([&](int x, int y, int z, double& rho, Vec3& u) { swirl(n, x, y, z, rho, u); });
   // An obstacle inside: a resting solid block adds links in all directions.
@@ -64,7 +64,7 @@ TEST_CASE("mass is conserved to round-off in a periodic box", "[lbm]") {
 }
 
 TEST_CASE("mass is conserved to round-off in a closed box with a moving lid", "[lbm]") {
-  LbmSolver lbm = closed_box(PopulationStorage::float64);
+  LbmSolver lbm = closed_box(Precision::float64);
   const double m0 = lbm.total_mass();
   for (int t = 0; t < 301; ++t) lbm.step();  // odd: ends in the swapped AA state
   CHECK(std::abs(lbm.total_mass() - m0) / m0 < 1e-13);
@@ -73,7 +73,7 @@ TEST_CASE("mass is conserved to round-off in a closed box with a moving lid", "[
 }
 
 TEST_CASE("float populations conserve mass to float round-off in a closed box", "[lbm]") {
-  LbmSolver lbm = closed_box(PopulationStorage::float32);
+  LbmSolver lbm = closed_box(Precision::float32);
   const double m0 = lbm.total_mass();
   for (int t = 0; t < 302; ++t) lbm.step();
   const double drift = std::abs(lbm.total_mass() - m0) / m0;

@@ -27,7 +27,7 @@ struct Snapshot {
 // With restore_at >= 0 the populations are saved after that many steps (stored_slots), scrambled
 // by a fresh initialization and loaded back (load_state), as a checkpoint and resume do.
 Snapshot run(int threads, int steps, bool les_porous = false,
-             PopulationStorage storage = PopulationStorage::float64, int restore_at = -1) {
+             Precision storage = Precision::float64, int restore_at = -1) {
   omp_set_num_threads(threads);
   LbmSettings s;
   s.nx = 24;
@@ -38,7 +38,7 @@ Snapshot run(int threads, int steps, bool les_porous = false,
   s.collision = Trt::from_tau(0.7);
   if (les_porous) s.collision = RegularizedLes::from_tau(0.51, 0.15);
   s.body_force = Vec3(1e-6, 0, -2e-6);
-  s.storage = storage;
+  s.precision = storage;
   LbmSolver lbm(s);
   lbm.initialize([](int x, int y, int z, double& rho, Vec3& u) {
     rho = 1.0 + 0.01 * std::sin(0.3 * x + 0.2 * y);
@@ -88,7 +88,7 @@ Snapshot run(int threads, int steps, bool les_porous = false,
 }
 
 /// The run at 1 and at 2 threads, checked bitwise equal; returns the 1-thread snapshot.
-Snapshot run_and_compare(bool les_porous, PopulationStorage storage = PopulationStorage::float64) {
+Snapshot run_and_compare(bool les_porous, Precision storage = Precision::float64) {
   const int saved = omp_get_max_threads();
   const Snapshot one = run(1, 41, les_porous, storage);
   const Snapshot two = run(2, 41, les_porous, storage);
@@ -118,12 +118,12 @@ TEST_CASE("LES operator, porous medium and torques are bitwise the same at 1 and
 
 TEST_CASE("Float populations are bitwise the same at 1 and 2 threads, and resume exactly",
           "[lbm]") {
-  const Snapshot one = run_and_compare(true, PopulationStorage::float32);
+  const Snapshot one = run_and_compare(true, Precision::float32);
   CHECK(one.forces[5].norm() > 0);
   const int saved = omp_get_max_threads();
   // Saved and loaded back mid-run (after an odd step: the swapped AA state), the run goes on
   // bitwise as if it never stopped.
-  const Snapshot resumed = run(1, 41, true, PopulationStorage::float32, 17);
+  const Snapshot resumed = run(1, 41, true, Precision::float32, 17);
   CHECK(std::memcmp(one.pdf.data(), resumed.pdf.data(), one.pdf.size() * sizeof(double)) == 0);
   for (std::size_t b = 0; b < one.forces.size(); ++b)
     CHECK(std::memcmp(one.forces[b].data(), resumed.forces[b].data(), 3 * sizeof(double)) == 0);
@@ -133,7 +133,7 @@ TEST_CASE("Float populations are bitwise the same at 1 and 2 threads, and resume
   // most 41 * 0.2 * 6e-8 / 3 = 1.6e-7 in u if every rounding went one way. A population read or
   // written without its w shift would be off by w_q >= 1/36 (an error of order 1e-2 in u).
   // Measured 1.5e-9.
-  const Snapshot dbl = run(1, 41, true, PopulationStorage::float64);
+  const Snapshot dbl = run(1, 41, true, Precision::float64);
   omp_set_num_threads(saved);
   double du = 0, umax = 0;
   for (std::size_t c = 0; c < dbl.velocity.size(); ++c) {

@@ -60,11 +60,11 @@ namespace {
 /// Steps a closed box with a lid, an obstacle, a body force and mass sources, and returns the
 /// largest |change - flux - added| over the nested regions and five steps (each balance checked
 /// below `bound` as it goes).
-double region_balance(PopulationStorage storage, double bound) {
+double region_balance(Precision storage, double bound) {
   const int n = 16;
   LbmSettings s;
   s.nx = s.ny = s.nz = n;
-  s.storage = storage;
+  s.precision = storage;
   for (int f = 2; f < 6; ++f) s.faces[std::size_t(f)].kind = FaceKind::wall;  // x stays periodic
   s.faces[5].wall_velocity = Vec3(0.05, 0.02, 0);  // a lid sliding in its own plane
   s.collision = Bgk::from_tau(0.6);
@@ -143,7 +143,7 @@ double region_balance(PopulationStorage storage, double bound) {
 }  // namespace
 
 TEST_CASE("level flux: each region's mass changes by the flux into it, to round-off", "[lbm]") {
-  region_balance(PopulationStorage::float64, 1e-12);
+  region_balance(Precision::float64, 1e-12);
 }
 
 TEST_CASE("level flux: the balance holds to float round-off with float populations", "[lbm]") {
@@ -152,7 +152,7 @@ TEST_CASE("level flux: the balance holds to float round-off with float populatio
   // largest region (4,000 cells) by at most 5e-5 and, with round to nearest, typically
   // sqrt(4,000) times less. A link read without the w shift would move a balance by w_q >= 1/36.
   // Bound 1e-5, 1/5 of the one-way worst case; measured 5.9e-8.
-  const double worst = region_balance(PopulationStorage::float32, 1e-5);
+  const double worst = region_balance(Precision::float32, 1e-5);
   INFO("largest imbalance " << worst);
   CHECK(worst > 0);  // float rounding is seen: the float path ran
 }

@@ -14,7 +14,7 @@ using namespace lbdem::lbm;
 
 TEST_CASE("LBM mass ledger closes with inlets, outlets, sources and cells carved after start",
           "[lbm]") {
-  for (const PopulationStorage storage : {PopulationStorage::float64, PopulationStorage::float32}) {
+  for (const Precision storage : {Precision::float64, Precision::float32}) {
     LbmSettings s;
     s.nx = 8, s.ny = 6, s.nz = 16;
     s.faces[0].kind = s.faces[1].kind = FaceKind::wall;
@@ -25,7 +25,7 @@ TEST_CASE("LBM mass ledger closes with inlets, outlets, sources and cells carved
     s.faces[5].kind = FaceKind::outlet;
     s.faces[5].density = 0.999;
     s.collision = Trt::from_tau(0.6, 3.0 / 16);
-    s.storage = storage;
+    s.precision = storage;
     LbmSolver g(s);
     const double m0 = g.total_mass();
     CHECK(g.initial_mass() == m0);
@@ -43,7 +43,7 @@ TEST_CASE("LBM mass ledger closes with inlets, outlets, sources and cells carved
       scale += std::abs(g.mass_flow(g.face_body(4))) + std::abs(g.mass_flow(g.face_body(5)));
       // Sums of a few hundred link terms per step at 1e-16 each (float storage: its rounding of
       // each population, 6e-8 relative): far below any real leak.
-      CHECK(std::abs(err) < (storage == PopulationStorage::float64 ? 1e-13 : 1e-5) * scale);
+      CHECK(std::abs(err) < (storage == Precision::float64 ? 1e-13 : 1e-5) * scale);
     }
     // The block's mass really left the ledger: without the booking the error would be its mass.
     CHECK(g.exchanged_mass() != 0);

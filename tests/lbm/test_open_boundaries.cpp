@@ -218,7 +218,7 @@ TEST_CASE("a uniform flow from inlet to outlet through a periodic box stays unif
     // if every rounding went one way. Bound 3e-5 on the velocity and density deviations and on
     // the outlet's mass flow; an outlet or inlet link without its w shift would be off by 1/36.
     // Measured 5e-9 (velocity) and 1.4e-9 (density): round to nearest does not go one way.
-    s.storage = PopulationStorage::float32;
+    s.precision = Precision::float32;
     LbmSolver lbm(s);
     for (int t = 0; t < 10000; ++t) lbm.step();
     const auto [du, drho] = deviation(lbm);

@@ -18,7 +18,7 @@ struct Result {
 };
 
 Result poiseuille(const CollisionModel& op, int h,
-                  PopulationStorage storage = PopulationStorage::float64) {
+                  Precision storage = Precision::float64) {
   const double nu = viscosity(op);
   const double u_c = 0.01;                        // centre velocity, Mach 0.017
   const double force = 8.0 * nu * u_c / (h * h);  // u_c = F H^2 / (8 rho nu)
@@ -29,7 +29,7 @@ Result poiseuille(const CollisionModel& op, int h,
   s.faces[4].kind = s.faces[5].kind = FaceKind::wall;
   s.collision = op;
   s.body_force = Vec3(force, 0, 0);
-  s.storage = storage;
+  s.precision = storage;
   LbmSolver lbm(s);
   auto exact = [&](int z) {
     const double zeta = z + 0.5;
@@ -76,7 +76,7 @@ TEST_CASE("Float populations keep the exact Poiseuille parabola to float round-o
   // source but the same rounding. Bound 1e-4: above that worst case. Measured 1.1e-5 (tau = 0.6)
   // and 2.7e-6 (tau = 1); without the w shift 4.2e-4 and 7.6e-5, which fails at tau = 0.6.
   for (double tau : {0.6, 1.0}) {
-    const Result r = poiseuille(Trt::from_tau(tau), 16, PopulationStorage::float32);
+    const Result r = poiseuille(Trt::from_tau(tau), 16, Precision::float32);
     INFO("tau = " << tau << ", largest error " << r.max_error << " of u_c");
     CHECK(r.max_error < 1e-4);
     CHECK(r.max_uz < 1e-4 * r.u_centre);

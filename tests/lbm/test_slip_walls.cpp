@@ -47,7 +47,7 @@ namespace {
 
 // Walls with slip s on both faces of `axis`, periodic elsewhere.
 LbmSettings slab(int nx, int ny, int nz, int axis, double s, const CollisionModel& op,
-                 PopulationStorage storage = PopulationStorage::float64) {
+                 Precision storage = Precision::float64) {
   LbmSettings set;
   set.nx = nx;
   set.ny = ny;
@@ -57,7 +57,7 @@ LbmSettings slab(int nx, int ny, int nz, int axis, double s, const CollisionMode
     set.faces[f].slip = s;
   }
   set.collision = op;
-  set.storage = storage;
+  set.precision = storage;
   return set;
 }
 
@@ -75,7 +75,7 @@ double slip_velocity(double g, int h, double s, double nu, double lambda) {
 }  // namespace
 
 TEST_CASE("Free-slip walls: a force-driven plug stays uniform, momentum grows by F t", "[lbm]") {
-  for (const auto storage : {PopulationStorage::float64, PopulationStorage::float32}) {
+  for (const auto storage : {Precision::float64, Precision::float32}) {
     for (int axis : {0, 2}) {
       const double g = 1e-5;
       Vec3 force(g, g, g);
@@ -86,7 +86,7 @@ TEST_CASE("Free-slip walls: a force-driven plug stays uniform, momentum grows by
       LbmSolver lbm(set);
       const double cells = double(lbm.grid().cells());
       const double m0 = lbm.total_mass();
-      const bool dbl = storage == PopulationStorage::float64;
+      const bool dbl = storage == Precision::float64;
       double worst_spread = 0, worst_p = 0, worst_m = 0, worst_ft = 0, worst_fn = 0;
       long t = 0;
       for (long until : {1L, 2L, 51L, 100L}) {  // odd and even step counts (both AA states)
@@ -145,7 +145,7 @@ struct SlipRun {
 
 // Steady Poiseuille flow between partial-slip walls normal to z, driven along x; H = nz.
 SlipRun poiseuille_slip(const CollisionModel& op, double s, int h,
-                        PopulationStorage storage = PopulationStorage::float64) {
+                        Precision storage = Precision::float64) {
   const double nu = viscosity(op), lambda = lambda_of(op);
   const double g = 8.0 * nu * 0.01 / (h * h);  // no-slip centre velocity 0.01
   const double us = slip_velocity(g, h, s, nu, lambda);
@@ -221,7 +221,7 @@ TEST_CASE("Partial-slip Poiseuille with float populations", "[lbm]") {
   const int h = 16;
   const Trt op = Trt::from_tau(1.0);
   for (double s : {0.3, 0.8}) {
-    const SlipRun r = poiseuille_slip(op, s, h, PopulationStorage::float32);
+    const SlipRun r = poiseuille_slip(op, s, h, Precision::float32);
     const double g = 8.0 * op.viscosity() * 0.01 / (h * h);
     const double us = slip_velocity(g, h, s, op.viscosity(), op.magic());
     INFO("s " << s << ": slip " << r.slip_measured << " (analytic " << us << "), spread "
@@ -236,7 +236,7 @@ namespace {
 
 // A duct along x: walls on y (slip s_y) and z (slip s_z), edges where they meet, a body force along
 // x and a shear wave across it so that the walls see tangential and normal traffic.
-LbmSettings duct(int nx, int ny, int nz, double s_y, double s_z, PopulationStorage storage) {
+LbmSettings duct(int nx, int ny, int nz, double s_y, double s_z, Precision storage) {
   LbmSettings set;
   set.nx = nx;
   set.ny = ny;
@@ -246,7 +246,7 @@ LbmSettings duct(int nx, int ny, int nz, double s_y, double s_z, PopulationStora
   set.faces[4].slip = set.faces[5].slip = s_z;
   set.collision = Trt::from_tau(0.8);
   set.body_force = Vec3(2e-5, 0, 0);
-  set.storage = storage;
+  set.precision = storage;
   return set;
 }
 
@@ -285,7 +285,7 @@ TEST_CASE("Slip fraction 0 is bounce-back, and a vanishing one gives its populat
   // slip path, where a + s (b - a) rounds to a: the populations must be bounce-back's bitwise
   // (this checks which slot each link reads and writes in both AA states), the wall forces to
   // round-off (their sum runs over the links in another order).
-  for (const auto storage : {PopulationStorage::float64, PopulationStorage::float32}) {
+  for (const auto storage : {Precision::float64, Precision::float32}) {
     for (long steps : {37L, 38L}) {
       LbmSettings plain_set = duct(12, 7, 6, 0.0, 0.0, storage);
       for (FaceBoundary& f : plain_set.faces.face) f = FaceBoundary{f.kind};  // slip untouched
@@ -311,7 +311,7 @@ TEST_CASE("Slip walls with edges: momentum and mass balance to round-off every s
   // y faces free slip, z faces partial slip: the z-face links next to the edges fall back to
   // bounce-back. Each step the raw momentum grows by the body force on all cells less the
   // momentum the walls took (their momentum-exchange forces), and the mass stays put.
-  for (const auto storage : {PopulationStorage::float64, PopulationStorage::float32}) {
+  for (const auto storage : {Precision::float64, Precision::float32}) {
     LbmSolver lbm(duct(10, 8, 6, 1.0, 0.4, storage));
     start_wavy(lbm);
     const Vec3 body = double(lbm.grid().cells()) * lbm.settings().body_force;
@@ -341,7 +341,7 @@ TEST_CASE("Slip walls with edges: momentum and mass balance to round-off every s
     // to bounce-back are z-face links; every y-face link has its specular partner, and the
     // free-slip y faces take exactly no tangential momentum.
     CHECK(worst_ft == 0.0);
-    if (storage == PopulationStorage::float64) {
+    if (storage == Precision::float64) {
       CHECK(worst_p < 1e-9);
       CHECK(worst_m < 1e-14);
     } else {
@@ -354,7 +354,7 @@ TEST_CASE("Slip walls with edges: momentum and mass balance to round-off every s
 TEST_CASE("Slip walls: bitwise the same at 1 and 2 threads", "[lbm]") {
   // 64 x 48 faces: over 15,000 links a face, several blocks of the fixed-block force sum.
   const int saved = omp_get_max_threads();
-  for (const auto storage : {PopulationStorage::float64, PopulationStorage::float32}) {
+  for (const auto storage : {Precision::float64, Precision::float32}) {
     Snapshot run[2];
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);

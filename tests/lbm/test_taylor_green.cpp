@@ -25,7 +25,7 @@ struct Decay {
   double rate, theory;
 };
 
-Decay taylor_green(PopulationStorage storage) {
+Decay taylor_green(Precision storage) {
   const int n = 32;
   const double u0 = 0.01, tau = 0.8;
   const double k = 2.0 * M_PI / n;
@@ -33,7 +33,7 @@ Decay taylor_green(PopulationStorage storage) {
   s.nx = s.ny = n;
   s.nz = 1;
   s.collision = Bgk::from_tau(tau);
-  s.storage = storage;
+  s.precision = storage;
   LbmSolver lbm(s);
   const double nu = lbm::viscosity(s.collision);
   // u = u0 (sin X cos Y, -cos X sin Y), X = k (x + 1/2); the pressure that balances its inertia,
@@ -56,7 +56,7 @@ Decay taylor_green(PopulationStorage storage) {
 }  // namespace
 
 TEST_CASE("2-D Taylor-Green vortex decays at the viscous rate", "[lbm]") {
-  const Decay d = taylor_green(PopulationStorage::float64);
+  const Decay d = taylor_green(Precision::float64);
   INFO("rate " << d.rate << " theory " << d.theory);
   // 1 % (the bound). The rate's leading lattice error is relative O((|k| dx)^2) = 0.077
   // times a coefficient proportional to Lambda - 1/12 with Lambda = (tau - 1/2)^2 for BGK
@@ -66,8 +66,8 @@ TEST_CASE("2-D Taylor-Green vortex decays at the viscous rate", "[lbm]") {
 }
 
 TEST_CASE("Float populations decay the Taylor-Green vortex at the double rate", "[lbm]") {
-  const Decay d = taylor_green(PopulationStorage::float64);
-  const Decay f = taylor_green(PopulationStorage::float32);
+  const Decay d = taylor_green(Precision::float64);
+  const Decay f = taylor_green(Precision::float32);
   INFO("rate in float " << f.rate << ", in double " << d.rate << ", theory " << f.theory);
   CHECK(f.rate == Approx(f.theory).epsilon(0.01));  // the double test's bound and reasons
   // Float rounds each stored deviation f - w (about 3 w u0) to 2^-24 of itself: at most

@@ -70,7 +70,7 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
   // Purely normal flow at some floor cells: zero tangential speed with a nonzero velocity.
   for (int x = 0; x < 5; ++x)
     ux[std::size_t(g.index(x, 1, 1))] = uy[std::size_t(g.index(x, 1, 1))] = 0;
-  const MomentFields moments{rho.data(), {ux.data(), uy.data(), uz.data()}};
+  const MomentFields<double> moments{rho.data(), {ux.data(), uy.data(), uz.data()}};
   const WernerWengle law{2e-4};
   const double rho_w = 1.0;
 
@@ -97,10 +97,16 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
     CHECK((fa.torque - fb.torque).norm() < 1e-12 * fb.torque.norm() + 1e-11);
     CHECK(std::abs(fa.mass - fb.mass) < 1e-13);
   }
-  // Float populations (f - w in float): the two kernels read and write through the same codec,
-  // so they agree to one float rounding of the reflected values, 2^-24 of |f - w| <= 0.12 (1e-8),
-  // and both equal the double kernel's values to that rounding; a slot written without its w
-  // shift would be off by w_q >= 1/36.
+  // Single precision (f - w in float, the moments in float): the two kernels read and write
+  // through the same codec, so they agree to one float rounding of the reflected values, 2^-24
+  // of |f - w| <= 0.12 (1e-8), and both equal the double kernel's values (on the same rounded
+  // moments) to that rounding; a slot written without its w shift would be off by w_q >= 1/36.
+  std::vector<float> rho_f(rho.begin(), rho.end()), ux_f(ux.begin(), ux.end()),
+      uy_f(uy.begin(), uy.end()), uz_f(uz.begin(), uz.end());
+  std::vector<double> rho_r(rho_f.begin(), rho_f.end()), ux_r(ux_f.begin(), ux_f.end()),
+      uy_r(uy_f.begin(), uy_f.end()), uz_r(uz_f.begin(), uz_f.end());
+  const MomentFields<float> moments_f{rho_f.data(), {ux_f.data(), uy_f.data(), uz_f.data()}};
+  const MomentFields<double> moments_r{rho_r.data(), {ux_r.data(), uy_r.data(), uz_r.data()}};
   for (const AaState state : {AaState::natural, AaState::swapped}) {
     PdfField<double> ref(g);
     PdfField<float> a(g), b(g);
@@ -112,9 +118,9 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
         ref.set(q, k, a.get(q, k));  // the double reference starts from the same rounded values
       }
     BounceBackLinks la = links, lb = links, lr = links;
-    const WallLoad fa = apply_wall_function(a, state, la, flat, law, moments, rho_w);
-    const WallLoad fb = apply_wall_function(b, state, lb, general, law, moments, rho_w);
-    const WallLoad fr = apply_wall_function(ref, state, lr, flat, law, moments, rho_w);
+    const WallLoad fa = apply_wall_function(a, state, la, flat, law, moments_f, rho_w);
+    const WallLoad fb = apply_wall_function(b, state, lb, general, law, moments_f, rho_w);
+    const WallLoad fr = apply_wall_function(ref, state, lr, flat, law, moments_r, rho_w);
     double flat_general = 0, float_double = 0;
     for (int q = 0; q < kQ; ++q)
       for (Index k = 0; k < g.storage_cells(); ++k) {

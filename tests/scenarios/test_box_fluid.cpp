@@ -189,8 +189,8 @@ TEST_CASE("a resumed gas run equals an uninterrupted one bitwise", "[scenarios][
   SECTION("with particles, 5 DEM steps per gas step") {
     compare(" --config " + mixed + " --set fluid.dt=2e-4", true);
   }
-  SECTION("with particles, float populations") {
-    compare(" --config " + mixed + " --set fluid.population_storage=float", true);
+  SECTION("with particles, single precision") {
+    compare(" --config " + mixed + " --set fluid.precision=single", true);
   }
   fs::remove(mixed);
 }
@@ -199,16 +199,16 @@ namespace {
 
 /// Replaces (or, with an empty value, removes) a string attribute of a checkpoint's /fluid group:
 /// the checkpoints of other builds, made here by hand.
-void set_storage_attribute(const std::string& file, const std::string& value) {
+void set_fluid_attribute(const std::string& file, const char* name, const std::string& value) {
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   REQUIRE(f >= 0);
   const hid_t g = H5Gopen2(f, "/fluid", H5P_DEFAULT);
-  if (H5Aexists(g, "population_storage") > 0) H5Adelete(g, "population_storage");
+  if (H5Aexists(g, name) > 0) H5Adelete(g, name);
   if (!value.empty()) {
     const hid_t type = H5Tcopy(H5T_C_S1);
     H5Tset_size(type, value.size());
     const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate2(g, "population_storage", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t a = H5Acreate2(g, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
     H5Awrite(a, type, value.data());
     H5Aclose(a);
     H5Sclose(space);
@@ -220,22 +220,45 @@ void set_storage_attribute(const std::string& file, const std::string& value) {
 
 }  // namespace
 
-TEST_CASE("a resume checks the checkpoint's population storage", "[scenarios][fluid]") {
+TEST_CASE("a resume checks the checkpoint's gas precision", "[scenarios][fluid]") {
   const std::string out = tmpdir("storage");
   REQUIRE(cli("run box --out " + out + kChannel + " --set run.end_time=5.0").code == 0);
   const std::string ck = out + "/checkpoint.h5";
-  CHECK(lbdem::H5In(ck).attr_string("population_storage", "/fluid") == "double");
-  // Float slots (f - w) read as double populations would lose w: refused, naming the fix.
-  set_storage_attribute(ck, "float");
+  CHECK(lbdem::H5In(ck).attr_string("precision", "/fluid") == "double");
+  // Single slots (f - w in float) read as double populations would lose w: refused, naming the fix.
+  set_fluid_attribute(ck, "precision", "single");
   const auto bad = cli("run --resume " + out + " --set run.end_time=10.0");
   CHECK(bad.code != 0);
-  CHECK(bad.err.find("holds the gas populations in float, this run stores them in double") !=
+  CHECK(bad.err.find("holds the gas in single precision, this run computes in double") !=
         std::string::npos);
-  // A checkpoint from before float storage has no attribute and holds doubles: it resumes.
-  set_storage_attribute(ck, "");
+  // An older checkpoint names its storage: float slots held f - w, as single's do.
+  set_fluid_attribute(ck, "precision", "");
+  set_fluid_attribute(ck, "population_storage", "float");
+  CHECK(cli("run --resume " + out + " --set run.end_time=10.0")
+            .err.find("holds the gas in single precision") != std::string::npos);
+  // Older still: no attribute, doubles; it resumes.
+  set_fluid_attribute(ck, "population_storage", "");
   CHECK(cli("run --resume " + out + " --set run.end_time=10.0").code == 0);
-  CHECK(lbdem::H5In(ck).attr_string("population_storage", "/fluid") == "double");
+  CHECK(lbdem::H5In(ck).attr_string("precision", "/fluid") == "double");
   fs::remove_all(out);
+}
+
+TEST_CASE("the old fluid.population_storage key reads as fluid.precision", "[scenarios][fluid]") {
+  // Run folders written before fluid.precision carry the old key in config.toml.
+  const std::string out = tmpdir("old_key");
+  REQUIRE(cli("run box --out " + out + kChannel +
+              " --set run.end_time=2.0 --set fluid.population_storage=float")
+              .code == 0);
+  CHECK(lbdem::H5In(out + "/checkpoint.h5").attr_string("precision", "/fluid") == "single");
+  const std::string resolved = read_text(out + "/config.toml");
+  CHECK(resolved.find("precision = 'single'") != std::string::npos);
+  CHECK(resolved.find("population_storage") == std::string::npos);
+  const auto both = cli("run box --out " + out + "_2" + kChannel +
+                        " --set fluid.population_storage=float --set fluid.precision=single");
+  CHECK(both.code == 2);
+  CHECK(both.err.find("fluid.population_storage") != std::string::npos);
+  fs::remove_all(out);
+  fs::remove_all(out + "_2");
 }
 
 TEST_CASE("inlet and outlet faces report their mass flow in kg/s", "[scenarios][fluid]") {
