@@ -3,7 +3,7 @@
 particle and per cell, DEM from 10^4 to 10^6 particles, LBM from 32^3 to 256^3 cells.
 
 usage: ./lbdem bench size [--dem-n 10000,...] [--lbm-n 32,...] [--threads T] [--settle S]
-                          [--dem-steps K] [--lbm-steps K] [--out DIR]
+                          [--dem-steps K] [--lbm-steps K] [--precision double,single] [--out DIR]
        (called as /usr/bin/python3 bench/size.py BUILD_DIR [options]; --dem-n '' or --lbm-n ''
        leaves that part out)
 
@@ -14,16 +14,17 @@ N = 10^6 a column 400 layers high, still falling after the settling steps, Z = 0
 S steps of 1e-5 s (default 3,000: the 8 layers close their 50 um gaps in 9 ms; the contact number
 Z of each size is in the table), then K timed steps of 1e-6 s.
 LBM: the coupled gas kernel (lbdem-bench-lbm --porous: TRT, Guo-Zhao porous form, per-cell force
-and velocity sums) on the periodic Taylor-Green box, K timed steps.
+and velocity sums) on the periodic Taylor-Green box, K timed steps, in each precision asked
+(default both).
 
 Each size runs in a process of its own (a DEM bed is settled and cached by a process before the
 measured one). Memory is the resident set right after the timed loop less that of the program
 before it built anything (/proc/self/status, core/memory.hpp), divided by the particles or
 interior cells; the peak (set-up temporaries included, less the same base) is in the CSV too. For
-the LBM the table sets it beside what the solver's fields need: 19 x 8 B of populations (AA
-pattern, one lattice), 3 x 8 B of force, 3 x 8 B of porosity, its reciprocal and drag, 3 x 8 B
-of velocity sums and a 1 B flag per stored cell, stored cells being (N + 2)^3 with the ghost
-layer. At small sizes the fixed cost of the process (OpenMP thread stacks, about 10 MB)
+the LBM the table sets it beside what the solver's fields need: 19 populations (AA pattern, one
+lattice), 3 of force, the porosity (8 B: always double), its reciprocal and drag, 3 of velocity
+sums, at 8 B each in double and 4 B in single, and a 1 B flag per stored cell, stored cells being
+(N + 2)^3 with the ghost layer. At small sizes the fixed cost of the process (OpenMP thread stacks, about 10 MB)
 dominates.
 Writes DIR/size.csv (after every size) and DIR/size.png (default DIR:
 $TMPDIR/lbdem-bench/size-STAMP). Exit 0; 1 if a run failed (the others stay in the table); 2 on
@@ -42,7 +43,9 @@ import matplotlib
 matplotlib.use("Agg")  # headless
 import matplotlib.pyplot as plt  # noqa: E402
 
-LBM_FIELD_BYTES = 19 * 8 + 3 * 8 + 3 * 8 + 3 * 8 + 1  # per stored cell, see the docstring
+# Per stored cell, see the docstring: populations, force, porosity, 1/eps and alpha, sums, flag.
+LBM_FIELD_BYTES = {p: 19 * b + 3 * b + 8 + 2 * b + 3 * b + 1
+                   for p, b in (("double", 8), ("single", 4))}
 
 
 def fail(msg, code=2):
@@ -96,7 +99,7 @@ def measure(label, cmds, pattern, failed):
     return text, wall, used, peak, m
 
 
-FIELDS = ["part", "size", "unit", "threads", "throughput", "throughput_unit",
+FIELDS = ["part", "precision", "size", "unit", "threads", "throughput", "throughput_unit",
           "contacts_per_particle", "bytes_per_unit", "expected_bytes_per_unit",
           "measured_over_expected", "resident_bytes", "peak_bytes", "wall_s"]
 
@@ -131,6 +134,7 @@ def main():
     ap.add_argument("--settle", type=int, default=3000)
     ap.add_argument("--dem-steps", type=int, default=500)
     ap.add_argument("--lbm-steps", type=int, default=20)
+    ap.add_argument("--precision", default="double,single")
     ap.add_argument("--out")
     a = ap.parse_args()
     dem_n = sizes(a.dem_n, "--dem-n", lambda v: None if 32 <= v <= 10**8 else
@@ -141,6 +145,9 @@ def main():
                     ("--dem-steps", a.dem_steps), ("--lbm-steps", a.lbm_steps)):
         if v < 1:
             fail(f"{name} {v}: must be >= 1")
+    precisions = [p for p in a.precision.split(",") if p]
+    if not precisions or any(p not in LBM_FIELD_BYTES for p in precisions):
+        fail(f"--precision '{a.precision}': give double, single or double,single")
     if not dem_n and not lbm_n:
         fail("nothing to run: --dem-n and --lbm-n are both empty")
     out = a.out or os.path.join(os.environ.get("TMPDIR", "/tmp"), "lbdem-bench",
@@ -162,7 +169,7 @@ def main():
         if not got:
             continue
         text, wall, used, peak, m = got
-        rows.append({"part": "dem", "size": n, "unit": "particle", "threads": a.threads,
+        rows.append({"part": "dem", "precision": "", "size": n, "unit": "particle", "threads": a.threads,
                      "throughput": float(m.group(2)), "throughput_unit": "particle-steps/s",
                      "contacts_per_particle": float(m.group(1)), "bytes_per_unit": used / n,
                      "expected_bytes_per_unit": "", "measured_over_expected": "",
@@ -170,22 +177,24 @@ def main():
         print(f"DEM N={n:>9,}: {float(m.group(2)):10.4g} particle-steps/s  Z={m.group(1)}  "
               f"{used / n:8.0f} B/particle  (peak {peak / 2**30:.2f} GiB)", flush=True)
         save_csv(out, rows)
-    for n in lbm_n:
-        got = measure(f"LBM {n}^3", [[f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
-                                      "--threads", str(a.threads), "--steps", str(a.lbm_steps),
-                                      "--warmup", "2"]], r"([\d.]+) MLUPS", failed)
+    for prec, n in [(p, n) for p in precisions for n in lbm_n]:
+        got = measure(f"LBM {n}^3 {prec}",
+                      [[f"{a.build}/bin/lbdem-bench-lbm", "--porous", "--n", str(n),
+                        "--threads", str(a.threads), "--steps", str(a.lbm_steps),
+                        "--warmup", "2", "--precision", prec]], r"([\d.]+) MLUPS", failed)
         if not got:
             continue
         text, wall, used, peak, m = got
         cells = n**3
-        expected = LBM_FIELD_BYTES * (n + 2) ** 3 / cells
-        rows.append({"part": "lbm", "size": cells, "unit": "cell", "threads": a.threads,
+        expected = LBM_FIELD_BYTES[prec] * (n + 2) ** 3 / cells
+        rows.append({"part": "lbm", "precision": prec, "size": cells, "unit": "cell",
+                     "threads": a.threads,
                      "throughput": float(m.group(1)) * 1e6, "throughput_unit": "cell-updates/s",
                      "contacts_per_particle": "", "bytes_per_unit": used / cells,
                      "expected_bytes_per_unit": expected,
                      "measured_over_expected": used / cells / expected,
                      "resident_bytes": used, "peak_bytes": peak, "wall_s": round(wall, 1)})
-        print(f"LBM {n:>3}^3: {float(m.group(1)):8.1f} MLUPS  {used / cells:6.1f} B/cell "
+        print(f"LBM {n:>3}^3 {prec:6}: {float(m.group(1)):8.1f} MLUPS  {used / cells:6.1f} B/cell "
               f"(fields {expected:.1f}: {used / cells / expected:.3f})  "
               f"(peak {peak / 2**30:.2f} GiB)", flush=True)
         save_csv(out, rows)
@@ -203,14 +212,21 @@ def main():
             ax_t.set_visible(False)
             ax_m.set_visible(False)
             continue
-        s = [x["size"] for x in r]
-        ax_t.semilogx(s, [x["throughput"] * scale for x in r], "o-")
+        for i, prec in enumerate(sorted({x["precision"] for x in r})):
+            rp = [x for x in r if x["precision"] == prec]
+            s = [x["size"] for x in rp]
+            tag = f", {prec}" if prec else ""
+            ax_t.semilogx(s, [x["throughput"] * scale for x in rp], "o-", color=f"C{i}",
+                          label=prec or None)
+            ax_m.semilogx(s, [x["bytes_per_unit"] for x in rp], "o-", color=f"C{i}",
+                          label="resident, measured" + tag)
+            if part == "lbm":
+                ax_m.semilogx(s, [x["expected_bytes_per_unit"] for x in rp], "--",
+                              color=f"C{i}", label="solver fields" + tag)
+        if part == "lbm":
+            ax_t.legend(fontsize=8)
         ax_t.set_ylabel(f"{unit} ({a.threads} thread(s))")
         ax_t.set_ylim(bottom=0)
-        ax_m.semilogx(s, [x["bytes_per_unit"] for x in r], "o-", label="resident, measured")
-        if part == "lbm":
-            ax_m.semilogx(s, [x["expected_bytes_per_unit"] for x in r], "k--",
-                          label="solver fields")
         ax_m.set_ylabel(f"bytes per {r[0]['unit']}")
         ax_m.set_ylim(bottom=0)
         ax_m.legend(fontsize=8)

@@ -15,8 +15,9 @@ namespace lbdem::scenarios {
 namespace {
 
 // [B] a gas lattice's memory per storage cell, halo included, without the coupling's fields
-// (results/bench/size.csv: 222.2 B at 256^3 cells, 228.7 at 128^3).
-constexpr double kGasBytesPerCell = 222;
+// (results/bench/size.csv, the coupled kernel's fields: double 222.2 B at 256^3 cells, 244.2 at
+// 128^3; single 131.0 at 128^3, its fields 117 B where double's are 225).
+constexpr double kGasBytesPerCell = 222, kGasBytesPerCellSingle = 118;
 
 const char* kAxes[3] = {"x", "y", "z"};
 const std::vector<std::string> kFaceKinds = {"wall",        "free_slip", "periodic",
@@ -242,12 +243,27 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
         cells_along(fluid, a, hi[a] - lo[a], c.dx, box_periodic[std::size_t(a)], offset);
     c.lo[a] -= offset;  // the grid centred on the edge
   }
+  // Run folders written before fluid.precision carry population_storage: its float slots held
+  // f - w as single precision's do, so they resume as single; the old key leaves the input.
+  std::string precision_default = "double";
+  if (fluid.has("population_storage")) {
+    if (fluid.has("precision"))
+      throw InputError(fluid.path("population_storage"), "",
+                       "is the old name of fluid.precision, which is also given",
+                       "remove fluid.population_storage");
+    const std::string old =
+        fluid.detached().get_choice("population_storage", "double", {"double", "float"});
+    precision_default = old == "float" ? "single" : "double";
+    Config(fluid).erase(fluid.path("population_storage"));
+  }
+  c.precision = fluid.get_choice("precision", precision_default, {"double", "single"});
   // Before anything is allocated; the coupling's fields add to this lower bound.
   double storage = 1;
   for (int n : c.cells) storage *= double(n) + 2;
-  require_memory(storage * kGasBytesPerCell,
+  const double per_cell = c.precision == "single" ? kGasBytesPerCellSingle : kGasBytesPerCell;
+  require_memory(storage * per_cell,
                  "the gas's " + to_text(storage) + " cells (with the halo, at least " +
-                     to_text(kGasBytesPerCell) + " B each)",
+                     to_text(per_cell) + " B each in " + c.precision + " precision)",
                  fluid.path("dx"), to_text(c.dx),
                  "choose a larger fluid.dx (twice the cell size is an eighth of the cells) or a "
                  "smaller box");
@@ -332,20 +348,6 @@ FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        "the wall function acts on every wall at rest, and face " +
                            std::string(lbm::BoxFaces::kNames[std::size_t(f)]) + " slips",
                        "drop fluid.wall_function, or make that face a no-slip wall");
-  // Run folders written before fluid.precision carry population_storage: its float slots held
-  // f - w as single precision's do, so they resume as single; the old key leaves the input.
-  std::string precision_default = "double";
-  if (fluid.has("population_storage")) {
-    if (fluid.has("precision"))
-      throw InputError(fluid.path("population_storage"), "",
-                       "is the old name of fluid.precision, which is also given",
-                       "remove fluid.population_storage");
-    const std::string old =
-        fluid.detached().get_choice("population_storage", "double", {"double", "float"});
-    precision_default = old == "float" ? "single" : "double";
-    Config(fluid).erase(fluid.path("population_storage"));
-  }
-  c.precision = fluid.get_choice("precision", precision_default, {"double", "single"});
   // A parameter of another operator would be silently ignored: say so.
   if (fluid.has("magic") && c.collision != "trt")
     throw InputError(fluid.path("magic"), "", "only used by fluid.collision = \"trt\"",
