@@ -204,7 +204,7 @@ TEST_CASE("fluidized bed: dp = weight / area once fluidized, U_mf from a ramp ag
 }
 
 TEST_CASE("fluidized bed in single precision: dp = weight / area and U_mf against Ergun",
-          "[scenarios][fluidized_bed][physics]") {
+          "[scenarios][fluidized_bed][physics][slow]") {
   // The test above with the gas in single precision, shortened to 0.37 s on 1 thread (about 20 s
   // on a busy core): the same pour and ramp (gas from 0.08 s, 25 mm/s at 0.23 s), so the same
   // U_mf fit, and dp averaged over 0.27 - 0.37 s (21 rows, two of the bed's 0.05 s oscillations)
