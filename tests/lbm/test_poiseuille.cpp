@@ -17,8 +17,7 @@ struct Result {
   double max_uz = 0;
 };
 
-Result poiseuille(const CollisionModel& op, int h,
-                  Precision storage = Precision::float64) {
+Result poiseuille(const CollisionModel& op, int h, Precision storage = Precision::float64) {
   const double nu = viscosity(op);
   const double u_c = 0.01;                        // centre velocity, Mach 0.017
   const double force = 8.0 * nu * u_c / (h * h);  // u_c = F H^2 / (8 rho nu)
