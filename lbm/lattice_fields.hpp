@@ -27,10 +27,8 @@ struct LatticeFields {
   mutable std::array<std::vector<T>, 3> u_sum;
   std::array<std::vector<T>, 4> moments;  // rho and u / eps of the last collision
 
-  MomentFields<T> moment_fields() const {
-    auto* self = const_cast<LatticeFields*>(this);  // written by the kernel's StoreMoments only
-    return {self->moments[0].data(),
-            {self->moments[1].data(), self->moments[2].data(), self->moments[3].data()}};
+  MomentFields<T> moment_fields() {
+    return {moments[0].data(), {moments[1].data(), moments[2].data(), moments[3].data()}};
   }
 };
 
