@@ -150,78 +150,88 @@ namespace {
 // axis, A = 1 and the pseudo-inverse 3 I, so the two differ at round-off (tested).
 constexpr std::size_t kFlatChunk = 64;
 
-// The run's kernel on double populations: from[m][j] holds f_q* of link m of cell j, to[m][j]
-// receives the reflected value. Not inlined, so that it is compiled (and vectorised) once for both
-// storages: inlined into the float caller, GCC 12 left its cell loop scalar. M: the precision of
-// the stored moments (the lattice's).
-template <class M>
-[[gnu::noinline]] WallLoad flat_run_kernel(const double* const (&from)[5], double* const (&to)[5],
+// The run's kernel on the slots as stored: from[m][j] holds slot f_q* of link m of cell j, to[m][j]
+// receives the reflected value. S: the slots' precision, in which it computes; M: the stored
+// moments' (the lattice's). Double slots hold f_q. Float slots hold f_q - w_q (pdf_field.hpp), and
+// since w_q = w_qbar the reflection f_q* + corr_q is the same sum on the shifted value. Over a
+// face's five links sum_q w_q c_q is along the normal only, so the tangential momentum (all the
+// slip uses) is the same sum on shifted slots, and each cell's force is the shifted sum plus the
+// constant 2 sum_q w_q c_q, added in double. Not inlined: inlined into a mixed-precision caller,
+// GCC 12 left its cell loop scalar.
+template <class S, class M>
+[[gnu::noinline]] WallLoad flat_run_kernel(const S* const (&from)[5], S* const (&to)[5],
                                            BounceBackLinks& links, const WallFunctionCells& cells,
                                            std::size_t u, const WernerWengleCell& law,
                                            const MomentFields<M>& moments, double rho_w,
                                            const Vec3& origin) {
+  using R = S;
+  constexpr bool kShiftedSlots = std::is_same_v<S, float>;
   const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
   const std::size_t k0 = cells.first[i0];
   const std::size_t c0 = std::size_t(cells.cell[i0]);
-  double cx[5], cy[5], cz[5], wc[5];  // c_q and Ladd's factor: corr_q = wc_q c_q . u_s
+  R cx[5], cy[5], cz[5], wc[5];     // c_q and Ladd's factor: corr_q = wc_q c_q . u_s
+  Vec3 shift_force = Vec3::Zero();  // 2 sum_q w_q c_q, the shifted slots' missing force
   for (std::size_t m = 0; m < 5; ++m) {
     const int q = links.dir[k0 + m];
-    cx[m] = kCx[q];
-    cy[m] = kCy[q];
-    cz[m] = kCz[q];
-    wc[m] = -2.0 * kW[q] * rho_w / kCs2;
+    cx[m] = R(kCx[q]);
+    cy[m] = R(kCy[q]);
+    cz[m] = R(kCz[q]);
+    wc[m] = R(-2.0 * kW[q] * rho_w / kCs2);
+    shift_force += 2.0 * kW[q] * Vec3(kCx[q], kCy[q], kCz[q]);
   }
   // Tangential mask: 0 along the face normal, 1 across; multiplying by it is exact.
   const Vec3& nrm = cells.normal[i0];
-  const double tx = nrm.x() == 0 ? 1.0 : 0.0, ty = nrm.y() == 0 ? 1.0 : 0.0,
-               tz = nrm.z() == 0 ? 1.0 : 0.0;
-  const double pinv = 3.0 / rho_w;  // (M_t / rho_w)^-1 = 3 I on a flat face, over rho_w
-  const double tiny = 1e-300;
+  const R tx = nrm.x() == 0 ? R(1) : R(0), ty = nrm.y() == 0 ? R(1) : R(0),
+          tz = nrm.z() == 0 ? R(1) : R(0);
+  const R pinv = R(3.0 / rho_w);  // (M_t / rho_w)^-1 = 3 I on a flat face, over rho_w
+  const R tiny = kShiftedSlots ? R(1e-30) : R(1e-300);
+  const R law_c0 = R(law.c0), law_c1 = R(law.c1), law_linear = R(law.linear),
+          law_switch = R(law.switch_speed);
   const M* rho = moments.rho + c0;
   const M *ux = moments.u[0] + c0, *uy = moments.u[1] + c0, *uz = moments.u[2] + c0;
 
   Vec3 force_sum = Vec3::Zero(), torque_sum = Vec3::Zero();
+  Vec3 force_run = Vec3::Zero(), moment_run = Vec3::Zero();  // shifted slots: sum f, e_x x sum j f
   double mass_sum = 0.0;
   for (std::size_t j0 = 0; j0 < n; j0 += kFlatChunk) {
     const std::size_t len = std::min(kFlatChunk, n - j0);
-    double fx[kFlatChunk], fy[kFlatChunk], fz[kFlatChunk], dm[kFlatChunk], corr[5][kFlatChunk];
+    R fx[kFlatChunk], fy[kFlatChunk], fz[kFlatChunk], dm[kFlatChunk], corr[5][kFlatChunk];
 #pragma omp simd
     for (std::size_t jj = 0; jj < len; ++jj) {
       const std::size_t j = j0 + jj;
-      double post[5];
-      double px = 0, py = 0, pz = 0;
+      R post[5];
+      R px = 0, py = 0, pz = 0;
       for (std::size_t m = 0; m < 5; ++m) {
         post[m] = from[m][j];
         px += post[m] * cx[m];
         py += post[m] * cy[m];
         pz += post[m] * cz[m];
       }
-      const double utx = tx * ux[j], uty = ty * uy[j], utz = tz * uz[j];
-      const double speed = std::sqrt(utx * utx + uty * uty + utz * utz);
-      const double safe = std::max(speed, tiny);
-      const double x = law.c0 + law.c1 * speed;
-      const double tau =
-          speed <= law.switch_speed ? law.linear * speed : x * std::sqrt(x * std::sqrt(x));
-      const double g = rho[j] * tau / safe;  // target = g u_t, the law's stress along the flow
-      double sx = pinv * tx * (2.0 * px - g * utx), sy = pinv * ty * (2.0 * py - g * uty),
-             sz = pinv * tz * (2.0 * pz - g * utz);
+      const R utx = tx * R(ux[j]), uty = ty * R(uy[j]), utz = tz * R(uz[j]);
+      const R speed = std::sqrt(utx * utx + uty * uty + utz * utz);
+      const R safe = std::max(speed, tiny);
+      const R x = law_c0 + law_c1 * speed;
+      const R tau = speed <= law_switch ? law_linear * speed : x * std::sqrt(x * std::sqrt(x));
+      const R g = R(rho[j]) * tau / safe;  // target = g u_t, the law's stress along the flow
+      R sx = pinv * tx * (R(2) * px - g * utx), sy = pinv * ty * (R(2) * py - g * uty),
+        sz = pinv * tz * (R(2) * pz - g * utz);
       // The general kernel's bounds: along the flow between 0 and the speed, across at most it.
-      const double ex = utx / safe, ey = uty / safe, ez = utz / safe;
-      const double d = sx * ex + sy * ey + sz * ez;
-      const double along = std::min(std::max(d, 0.0), speed);
-      double ax = sx - d * ex, ay = sy - d * ey, az = sz - d * ez;
-      const double an = std::sqrt(ax * ax + ay * ay + az * az);
-      const double scale = an > speed ? speed / std::max(an, tiny) : 1.0;
-      const double on = speed > 0 ? 1.0 : 0.0;
+      const R ex = utx / safe, ey = uty / safe, ez = utz / safe;
+      const R d = sx * ex + sy * ey + sz * ez;
+      const R along = std::min(std::max(d, R(0)), speed);
+      R ax = sx - d * ex, ay = sy - d * ey, az = sz - d * ez;
+      const R an = std::sqrt(ax * ax + ay * ay + az * az);
+      const R scale = an > speed ? speed / std::max(an, tiny) : R(1);
+      const R on = speed > 0 ? R(1) : R(0);
       sx = on * (along * ex + scale * ax);
       sy = on * (along * ey + scale * ay);
       sz = on * (along * ez + scale * az);
-      double fxj = 0, fyj = 0, fzj = 0, dmj = 0;
+      R fxj = 0, fyj = 0, fzj = 0, dmj = 0;
       for (std::size_t m = 0; m < 5; ++m) {
-        const double cm = wc[m] * (cx[m] * sx + cy[m] * sy + cz[m] * sz);
+        const R cm = wc[m] * (cx[m] * sx + cy[m] * sy + cz[m] * sz);
         corr[m][jj] = cm;
         to[m][j] = post[m] + cm;
-        const double out = 2.0 * post[m] + cm;
+        const R out = R(2) * post[m] + cm;
         fxj += out * cx[m];
         fyj += out * cy[m];
         fzj += out * cz[m];
@@ -232,14 +242,40 @@ template <class M>
       fz[jj] = fzj;
       dm[jj] = dmj;
     }
-    for (std::size_t jj = 0; jj < len; ++jj) {
-      const std::size_t i = i0 + j0 + jj;
-      const Vec3 f(fx[jj], fy[jj], fz[jj]);
-      force_sum += f;
-      torque_sum += (cells.centre[i] - origin).cross(f);
-      mass_sum += dm[jj];
-      for (std::size_t m = 0; m < 5; ++m) links.correction[cells.first[i] + m] = corr[m][jj];
+    if constexpr (kShiftedSlots) {
+      // The run's cells are x neighbours with five links each: centre_j = centre_0 + j e_x and
+      // link m of cell j is k0 + 5 j + m. Sums of f and of j f give force and torque.
+      double sx = 0, sy = 0, sz = 0, jy = 0, jz = 0, sm = 0;
+#pragma omp simd reduction(+ : sx, sy, sz, jy, jz, sm)
+      for (std::size_t jj = 0; jj < len; ++jj) {
+        const double j = double(j0 + jj);
+        sx += double(fx[jj]);
+        sy += double(fy[jj]);
+        sz += double(fz[jj]);
+        jy += j * (double(fy[jj]) + shift_force.y());
+        jz += j * (double(fz[jj]) + shift_force.z());
+        sm += double(dm[jj]);
+      }
+      for (std::size_t jj = 0; jj < len; ++jj)
+        for (std::size_t m = 0; m < 5; ++m)
+          links.correction[k0 + 5 * (j0 + jj) + m] = double(corr[m][jj]);
+      force_run += Vec3(sx, sy, sz) + double(len) * shift_force;
+      moment_run += Vec3(0.0, -jz, jy);  // e_x x sum_j j f_j
+      mass_sum += sm;
+    } else {
+      for (std::size_t jj = 0; jj < len; ++jj) {
+        const std::size_t i = i0 + j0 + jj;
+        const Vec3 f(fx[jj], fy[jj], fz[jj]);
+        force_sum += f;
+        torque_sum += (cells.centre[i] - origin).cross(f);
+        mass_sum += dm[jj];
+        for (std::size_t m = 0; m < 5; ++m) links.correction[cells.first[i] + m] = corr[m][jj];
+      }
     }
+  }
+  if constexpr (kShiftedSlots) {
+    force_sum = force_run;
+    torque_sum = (cells.centre[i0] - origin).cross(force_run) + moment_run;
   }
   WallLoad load;
   load.force = force_sum;
@@ -248,43 +284,20 @@ template <class M>
   return load;
 }
 
-/// Points the kernel at the run's slots; float slots are decoded into double scratch first and
-/// encoded back after.
+/// Points the kernel at the run's slots, which along a flat run are consecutive per link.
 template <class T>
 WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                         const WallFunctionCells& cells, std::size_t u, const WernerWengleCell& law,
                         const MomentFields<T>& moments, double rho_w, const Vec3& origin) {
-  const std::size_t i0 = cells.unit_first[u], n = cells.unit_first[u + 1] - i0;
-  const std::size_t k0 = cells.first[i0];
-  const double* from[5];
-  double* to[5];
-  if constexpr (std::is_same_v<T, double>) {
-    for (std::size_t m = 0; m < 5; ++m) {
-      const auto slots = link_slots(pdf, now, links, k0 + m);
-      from[m] = slots.from.p;
-      to[m] = slots.to.p;
-    }
-    return flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
-  } else {
-    using Codec = PopulationCodec<T>;
-    thread_local std::vector<double> scratch;
-    scratch.resize(10 * n);
-    T* slot_to[5];
-    int slot_q[5];
-    for (std::size_t m = 0; m < 5; ++m) {
-      const auto slots = link_slots(pdf, now, links, k0 + m);
-      slot_q[m] = links.dir[k0 + m];
-      slot_to[m] = slots.to.p;
-      double* in = scratch.data() + m * n;
-      for (std::size_t j = 0; j < n; ++j) in[j] = Codec::load(slots.from.p[j], slot_q[m]);
-      from[m] = in;
-      to[m] = scratch.data() + (5 + m) * n;
-    }
-    const WallLoad load = flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
-    for (std::size_t m = 0; m < 5; ++m)
-      for (std::size_t j = 0; j < n; ++j) slot_to[m][j] = Codec::store(to[m][j], slot_q[m]);
-    return load;
+  const std::size_t k0 = cells.first[cells.unit_first[u]];
+  const T* from[5];
+  T* to[5];
+  for (std::size_t m = 0; m < 5; ++m) {
+    const auto slots = link_slots(pdf, now, links, k0 + m);
+    from[m] = slots.from.p;
+    to[m] = slots.to.p;
   }
+  return flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
 }
 
 }  // namespace
