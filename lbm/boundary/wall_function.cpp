@@ -300,6 +300,117 @@ WallLoad apply_flat_run(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
   return flat_run_kernel(from, to, links, cells, u, law, moments, rho_w, origin);
 }
 
+// General (staircase) cells on float slots, kGeneralChunk consecutive cells at a time in three
+// passes: their links' momentum is gathered cell by cell, the slip of every cell is computed in
+// one vectorised loop (the latency-bound part: roots, divisions and the bounds), and the links
+// are written back cell by cell. The formulas are the general kernel's (apply_wall_function) on
+// shifted slots: sum_q w_q c_q = -(A / 6) n lies along the normal, so the tangential momentum the
+// slip needs is the same sum on f_q - w_q, and each cell's force is the shifted sum plus the
+// constant 2 sum_q w_q c_q = -(A / 3) n.
+constexpr std::size_t kGeneralChunk = 64;  // a multiple of 16
+constexpr std::size_t kShortRun = 16;
+
+WallLoad general_chunk(PdfField<float>& pdf, AaState now, BounceBackLinks& links,
+                       const WallFunctionCells& cells, const std::size_t (&idx)[kGeneralChunk],
+                       std::size_t count, const WernerWengleCell& law,
+                       const MomentFields<float>& moments, double rho_w, const Vec3& origin) {
+  float px[kGeneralChunk], py[kGeneralChunk], pz[kGeneralChunk];
+  float ux[kGeneralChunk], uy[kGeneralChunk], uz[kGeneralChunk], rho[kGeneralChunk];
+  float nx[kGeneralChunk], ny[kGeneralChunk], nz[kGeneralChunk], area[kGeneralChunk];
+  float e1[3][kGeneralChunk], e2[3][kGeneralChunk], mp[3][kGeneralChunk];
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::size_t i = idx[j];
+    float sx = 0, sy = 0, sz = 0;
+    for (std::size_t k = cells.first[i]; k < cells.first[i + 1]; ++k) {
+      const int q = links.dir[k];
+      const float post = *link_slots(pdf, now, links, k).from.p;
+      sx += post * float(kCx[q]);
+      sy += post * float(kCy[q]);
+      sz += post * float(kCz[q]);
+    }
+    px[j] = sx;
+    py[j] = sy;
+    pz[j] = sz;
+    const std::size_t c = std::size_t(cells.cell[i]);
+    rho[j] = moments.rho[c];
+    ux[j] = moments.u[0][c];
+    uy[j] = moments.u[1][c];
+    uz[j] = moments.u[2][c];
+    nx[j] = float(cells.normal[i].x());
+    ny[j] = float(cells.normal[i].y());
+    nz[j] = float(cells.normal[i].z());
+    area[j] = float(cells.area[i]);
+    for (int a = 0; a < 3; ++a) {
+      e1[a][j] = float(cells.e1[i][a]);
+      e2[a][j] = float(cells.e2[i][a]);
+      mp[a][j] = float(cells.m_pinv[i][std::size_t(a)]);
+    }
+  }
+  // Whole vectors: the padding lanes are zero (no area, no slip).
+  const std::size_t padded = (count + 15) / 16 * 16;
+  for (std::size_t j = count; j < padded; ++j) {
+    px[j] = py[j] = pz[j] = ux[j] = uy[j] = uz[j] = rho[j] = 0;
+    nx[j] = ny[j] = nz[j] = area[j] = 0;
+    for (int a = 0; a < 3; ++a) e1[a][j] = e2[a][j] = mp[a][j] = 0;
+  }
+  const float law_c0 = float(law.c0), law_c1 = float(law.c1), law_linear = float(law.linear),
+              law_switch = float(law.switch_speed), inv_rho_w = float(1.0 / rho_w), tiny = 1e-30f;
+  float slip[3][kGeneralChunk];
+#pragma omp simd
+  for (std::size_t j = 0; j < padded; ++j) {
+    const float un = ux[j] * nx[j] + uy[j] * ny[j] + uz[j] * nz[j];
+    const float tx = ux[j] - un * nx[j], ty = uy[j] - un * ny[j], tz = uz[j] - un * nz[j];
+    const float speed = std::sqrt(tx * tx + ty * ty + tz * tz);
+    const float safe = std::max(speed, tiny);
+    const float x = law_c0 + law_c1 * speed;
+    const float tau = speed <= law_switch ? law_linear * speed : x * std::sqrt(x * std::sqrt(x));
+    const float g = rho[j] * tau * area[j] / safe;  // target = g u_t
+    const float rx = 2.0f * px[j] - g * tx, ry = 2.0f * py[j] - g * ty, rz = 2.0f * pz[j] - g * tz;
+    const float r1 = e1[0][j] * rx + e1[1][j] * ry + e1[2][j] * rz;
+    const float r2 = e2[0][j] * rx + e2[1][j] * ry + e2[2][j] * rz;
+    const float a1 = (mp[0][j] * r1 + mp[1][j] * r2) * inv_rho_w;
+    const float a2 = (mp[1][j] * r1 + mp[2][j] * r2) * inv_rho_w;
+    float sx = a1 * e1[0][j] + a2 * e2[0][j], sy = a1 * e1[1][j] + a2 * e2[1][j],
+          sz = a1 * e1[2][j] + a2 * e2[2][j];
+    // The bounds of the general kernel: along the flow between 0 and the speed, across at most it.
+    const float ex = tx / safe, ey = ty / safe, ez = tz / safe;
+    const float d = sx * ex + sy * ey + sz * ez;
+    const float along = std::min(std::max(d, 0.0f), speed);
+    const float cx = sx - d * ex, cy = sy - d * ey, cz = sz - d * ez;
+    const float cn = std::sqrt(cx * cx + cy * cy + cz * cz);
+    const float scale = cn > speed ? speed / std::max(cn, tiny) : 1.0f;
+    const float on = speed > 0 && area[j] > 0 ? 1.0f : 0.0f;
+    slip[0][j] = on * (along * ex + scale * cx);
+    slip[1][j] = on * (along * ey + scale * cy);
+    slip[2][j] = on * (along * ez + scale * cz);
+  }
+  WallLoad load;
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::size_t i = idx[j];
+    float fx = 0, fy = 0, fz = 0, mass = 0;
+    for (std::size_t k = cells.first[i]; k < cells.first[i + 1]; ++k) {
+      const int q = links.dir[k];
+      const float cxq = float(kCx[q]), cyq = float(kCy[q]), czq = float(kCz[q]);
+      const float corr = float(-2.0 * kW[q] * rho_w / kCs2) *
+                         (cxq * slip[0][j] + cyq * slip[1][j] + czq * slip[2][j]);
+      const auto slots = link_slots(pdf, now, links, k);
+      const float post = *slots.from.p;
+      *slots.to.p = post + corr;
+      const float out = 2.0f * post + corr;
+      fx += out * cxq;
+      fy += out * cyq;
+      fz += out * czq;
+      mass += corr;
+      links.correction[k] = double(corr);
+    }
+    const Vec3 f = Vec3(fx, fy, fz) - cells.area[i] / 3.0 * cells.normal[i];
+    load.force += f;
+    load.torque += (cells.centre[i] - origin).cross(f);
+    load.mass += double(mass);
+  }
+  return load;
+}
+
 }  // namespace
 
 template <class T>
@@ -373,6 +484,39 @@ WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& lin
     return load;
   };
   // Each summand applies its links as a side effect: deterministic_sum calls it once per block.
+  if constexpr (std::is_same_v<T, float>) {
+    return deterministic_sum(
+        cells.block_first.size() - 1,
+        [&](std::size_t b) {
+          WallLoad load;
+          std::size_t idx[kGeneralChunk];
+          std::size_t count = 0;
+          const auto flush = [&] {
+            if (count > 0)
+              load += general_chunk(pdf, now, links, cells, idx, count, cell_law, moments, rho_w,
+                                    origin);
+            count = 0;
+          };
+          // Flat runs shorter than a vector go with the general cells: the staircase of the
+          // jet mill's cylinder holds hundreds of flat runs of one or two cells, for which the
+          // run kernel's set-up costs more than the general formulas, computed in lanes.
+          for (std::size_t u = cells.block_first[b]; u < cells.block_first[b + 1]; ++u) {
+            const std::size_t i0 = cells.unit_first[u], i1 = cells.unit_first[u + 1];
+            if (cells.unit_flat[u] && i1 - i0 >= kShortRun) {
+              flush();
+              load += apply_flat_run(pdf, now, links, cells, u, cell_law, moments, rho_w, origin);
+              continue;
+            }
+            for (std::size_t i = i0; i < i1; ++i) {
+              if (count == kGeneralChunk) flush();
+              idx[count++] = i;
+            }
+          }
+          flush();
+          return load;
+        },
+        WallLoad{}, 1);
+  }
   return deterministic_sum(
       cells.block_first.size() - 1,
       [&](std::size_t b) {

@@ -97,10 +97,15 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
     CHECK((fa.torque - fb.torque).norm() < 1e-12 * fb.torque.norm() + 1e-11);
     CHECK(std::abs(fa.mass - fb.mass) < 1e-13);
   }
-  // Single precision (f - w in float, the moments in float): the two kernels read and write
-  // through the same codec, so they agree to one float rounding of the reflected values, 2^-24
-  // of |f - w| <= 0.12 (1e-8), and both equal the double kernel's values (on the same rounded
-  // moments) to that rounding; a slot written without its w shift would be off by w_q >= 1/36.
+  // Single precision (f - w in float, the moments in float, the slip computed in float): both
+  // kernels agree with the double kernel (on the same rounded moments and slots) to float's
+  // arithmetic. Per link: the links' tangential momentum (five to nine slots of |f - w| <= 0.12)
+  // rounds at about 2^-24 x 0.5 = 3e-8, times the pseudo-inverse 3 over rho_w gives 1e-7 in the
+  // slip, and the term 6 w_q c_q . u_s (w_q <= 1/18) carries 3e-8 of it, plus the rounding of the
+  // reflected value, 2^-24 x 0.12 = 7e-9: bound 1e-7 per slot. Per cell the force sums up to nine
+  // links' 2 (f - w) + corr, each off by at most that: bound 1e-6 per cell, summed over the cells
+  // (linear, the worst case). A slot written without its w shift would be off by w_q >= 1/36, a
+  // force without the shift's constant by A / 3 per cell.
   std::vector<float> rho_f(rho.begin(), rho.end()), ux_f(ux.begin(), ux.end()),
       uy_f(uy.begin(), uy.end()), uz_f(uz.begin(), uz.end());
   std::vector<double> rho_r(rho_f.begin(), rho_f.end()), ux_r(ux_f.begin(), ux_f.end()),
@@ -128,9 +133,13 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
         float_double = std::max(float_double, std::abs(a.get(q, k) - ref.get(q, k)));
       }
     INFO("float: flat - general " << flat_general << ", float - double " << float_double);
-    CHECK(flat_general < 1e-8);
-    CHECK(float_double < 1e-8);
-    CHECK((fa.force - fr.force).norm() < 1e-12 * fr.force.norm() + 1e-12);
-    CHECK((fb.force - fr.force).norm() < 1e-12 * fr.force.norm() + 1e-11);
+    CHECK(flat_general < 1e-7);
+    CHECK(float_double < 1e-7);
+    const double force_bound = 1e-6 * double(flat.size());
+    INFO("force: flat " << (fa.force - fr.force).norm() << ", general "
+                        << (fb.force - fr.force).norm() << " of " << fr.force.norm());
+    CHECK((fa.force - fr.force).norm() < force_bound);
+    CHECK((fb.force - fr.force).norm() < force_bound);
+    CHECK(std::abs(fa.mass - fr.mass) < 1e-7 * double(links.size()));
   }
 }
