@@ -43,6 +43,7 @@ template <CollisionOperator C, class Forcing, class T>
   CellForceT<T> force;
   const CellMomentsT<T> m = forcing.moments(f, n0 + i, force);
   coll.template relax<Forcing::kActive>(f, m, force);
+  if constexpr (kShifted<T>) f[0] = rest_from_mass(f, m.drho);
   static_for<kQ>([&](auto q) LBDEM_INLINE { out[q][i] = f[q]; });
 }
 

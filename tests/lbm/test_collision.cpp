@@ -187,8 +187,9 @@ TEST_CASE("Single-precision collision on f - w matches the double collision to a
   // Not visible in one collision, but systematic over many: the shifted equilibrium multiplies
   // by float(w_q), whose moments are sum_q float(w_q) = 1 + 1.5e-8 and sum_q float(w_q) c_qx^2 =
   // (1 + 7.45e-9) / 3, a relative bias of ~ 1e-8 in the mass and momentum of the equilibrium,
-  // well inside the bound here (u_f = 6e-8), which flows that change step by step accumulate
-  // (test_les.cpp, shear wave in single precision).
+  // well inside the bound here (u_f = 6e-8), which flows that change step by step accumulate.
+  // The kernel removes the mass part by setting the rest population from the cell's mass
+  // (cell.hpp, rest_from_mass); the momentum part stays (test_les.cpp, shear wave in single).
   struct Named {
     std::string_view name;
     CollisionModel op;
