@@ -28,12 +28,8 @@
 
 namespace lbdem::lbm {
 
-/// Collides `count` consecutive cells of a row: cell i reads f_q at in[q][i] and writes f_q* to
-/// out[q][i]; n0 is the storage index of cell 0 (for the per-cell force). The loop is vectorised
-/// across cells; with the AA addresses in and out may overlap, but only within one cell, which
-/// reads all 19 values before it writes any, so `omp simd` is safe. The arithmetic runs in the
-/// storage type T on the slots as stored: double f_q, or float f_q - w_q (pdf_field.hpp), which
-/// the operators and forcing policies take as shifted (cell.hpp): no conversion per population.
+/// Cell i of collide_cells. In single precision the rest population is set last from the cell's
+/// mass (cell.hpp, rest_from_mass).
 template <CollisionOperator C, class Forcing, class T>
 [[gnu::always_inline]] inline void collide_cell(const C& coll, const Forcing& forcing,
                                                 const T* const (&in)[kQ], T* const (&out)[kQ],
