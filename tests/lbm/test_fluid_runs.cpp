@@ -105,7 +105,7 @@ TEST_CASE("LBM: colliding only the fluid runs leaves the fluid as colliding ever
   }
 }
 
-TEST_CASE("LBM: runs widened to whole vectors in a cylinder; the fluid unchanged", "[lbm]") {
+TEST_CASE("LBM: runs widened to whole vectors in a cylinder leave the fluid unchanged", "[lbm]") {
   // A chamber like the jet mill's: a cylinder of diameter 37 cells in a closed 37 x 37 x 4 box,
   // whose chords of 9-37 cells leave room to widen only where they are short, and a solid post
   // at its centre that splits the middle rows.

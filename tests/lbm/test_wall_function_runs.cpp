@@ -141,5 +141,12 @@ TEST_CASE("LBM: the flat-face wall-function kernel matches the general one to ro
     CHECK((fa.force - fr.force).norm() < force_bound);
     CHECK((fb.force - fr.force).norm() < force_bound);
     CHECK(std::abs(fa.mass - fr.mass) < 1e-7 * double(links.size()));
+    // Torque about the origin: each cell's force error times its arm, at most 151 cells (the
+    // box's diagonal). The flat kernel sums it per run as (x_0 - o) x F + e_x x sum_j j f_j; a
+    // wrong arm or sign there is off by a run's force times its length, far above this.
+    INFO("torque: flat " << (fa.torque - fr.torque).norm() << ", general "
+                         << (fb.torque - fr.torque).norm() << " of " << fr.torque.norm());
+    CHECK((fa.torque - fr.torque).norm() < 151 * force_bound);
+    CHECK((fb.torque - fr.torque).norm() < 151 * force_bound);
   }
 }
