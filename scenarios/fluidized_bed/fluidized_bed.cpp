@@ -80,7 +80,11 @@ double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>&
   const FluidConfig& f = box_.fluid();
   // At the distributor or the outlet: the gas's push on that face (its momentum-exchange force)
   // per area, what a tap in the plate reads, rather than an extrapolation of the cell planes over
-  // the half cell next to it, where the bed's lowest forces sit.
+  // the half cell next to it, where the bed's lowest forces sit. That push is the absolute
+  // lattice pressure rho c_s^2 (plus the momentum flux rho u^2 through an inlet or outlet, about
+  // 1 Pa at 1 m/s), so the reference rho_ref c_s^2 is taken off, as the cell planes' gauge
+  // pressure (rho - rho_ref) c_s^2 has it: a tap inside the gas and one at a face then read on
+  // one scale (with one of each the drop was off by rho_ref c_s^2, tens of kPa).
   // The gas's cross-section: the pressure acts over the grid, whose walls may lie up to dx/4
   // outside or inside the particles' (fluid_config.cpp).
   const double z_hi = f.hi().z();
@@ -91,7 +95,7 @@ double FluidizedBedScenario::plane_pressure(double z, const std::vector<double>&
     // tau = 1/2 (lbm/lbm_solver.hpp, wall_force_mean2).
     const double fz =
         f.units().force_to_si(gas.wall_force_mean2(gas.face_body(z <= f.lo.z() ? 4 : 5)).z());
-    return (z <= f.lo.z() ? -fz : fz) / area;
+    return (z <= f.lo.z() ? -fz : fz) / area - f.units().pressure_to_si(lbm::kCs2);
   }
   // Linear between the cell-centre planes, extrapolated over the half cell next to a face.
   const double s = (z - f.lo.z()) / f.dx - 0.5;  // cell-centre coordinate
