@@ -417,72 +417,7 @@ template <class T>
 WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& links,
                              const WallFunctionCells& cells, const WernerWengle& law,
                              const MomentFields<T>& moments, double rho_w, const Vec3& origin) {
-  using Codec = PopulationCodec<T>;
   const WernerWengleCell cell_law(law);
-  // One cell, any staircase shape.
-  const auto general = [&](std::size_t i) -> WallLoad {
-    const std::size_t k0 = cells.first[i], k1 = cells.first[i + 1];
-    // The links' slots are found once: f_q* is read here and the reflected value written
-    // below (a cell has at most kQ - 1 links).
-    double post[kQ - 1];
-    T* to[kQ - 1];
-    Vec3 p = Vec3::Zero();  // momentum the links carry into the wall
-    for (std::size_t k = k0; k < k1; ++k) {
-      const int q = links.dir[k];
-      const auto slots = link_slots(pdf, now, links, k);
-      post[k - k0] = slots.from;
-      to[k - k0] = slots.to.p;
-      p += post[k - k0] * Vec3(kCx[q], kCy[q], kCz[q]);
-    }
-    Vec3 slip = Vec3::Zero();
-    if (cells.area[i] > 0) {
-      // The cell's density and velocity as its collision this step saw them.
-      const std::size_t c = std::size_t(cells.cell[i]);
-      const double rho = moments.rho[c];
-      const Vec3 u(double(moments.u[0][c]), double(moments.u[1][c]), double(moments.u[2][c]));
-      const Vec3& n = cells.normal[i];
-      const Vec3 ut = u - u.dot(n) * n;
-      const double speed = ut.norm();
-      Vec3 target = Vec3::Zero();
-      if (speed > 0) target = rho * cell_law.kinematic_stress(speed) * cells.area[i] / speed * ut;
-      const Vec3 r = 2.0 * p - target;
-      const double r1 = cells.e1[i].dot(r), r2 = cells.e2[i].dot(r);
-      const auto& mi = cells.m_pinv[i];
-      slip = ((mi[0] * r1 + mi[1] * r2) * cells.e1[i] + (mi[1] * r1 + mi[2] * r2) * cells.e2[i]) /
-             rho_w;
-      // Stability: the wall may slip along the flow, between no slip and the cell's own speed,
-      // never against it or past it. The bounds are inactive where the layer is in
-      // equilibrium (slip ~ u_t - 3 tau_w / rho_w, with tau_w between 0 and no slip's) and
-      // catch the transients in which the explicit slip would drive the wall cell.
-      if (speed > 0) {
-        const Vec3 t = ut / speed;
-        const double along = std::clamp(slip.dot(t), 0.0, speed);
-        Vec3 across = slip - slip.dot(t) * t;
-        if (across.norm() > speed) across *= speed / across.norm();
-        slip = along * t + across;
-      } else {
-        slip = Vec3::Zero();
-      }
-    }
-    // Sums in locals: accumulated in the returned struct they went through memory, a
-    // store-to-load chain per link (9 % of this function in perf).
-    Vec3 force = Vec3::Zero();
-    double mass = 0.0;
-    for (std::size_t k = k0; k < k1; ++k) {
-      const int q = links.dir[k];
-      const Vec3 cq(kCx[q], kCy[q], kCz[q]);
-      const double corr = -2.0 * kW[q] * rho_w * cq.dot(slip) / kCs2;
-      links.correction[k] = corr;
-      *to[k - k0] = Codec::store(post[k - k0] + corr, q);
-      force += (2.0 * post[k - k0] + corr) * cq;
-      mass += corr;
-    }
-    WallLoad load;
-    load.force = force;
-    load.torque = (cells.centre[i] - origin).cross(force);
-    load.mass = mass;
-    return load;
-  };
   // Each summand applies its links as a side effect: deterministic_sum calls it once per block.
   if constexpr (std::is_same_v<T, float>) {
     return deterministic_sum(
@@ -516,19 +451,85 @@ WallLoad apply_wall_function(PdfField<T>& pdf, AaState now, BounceBackLinks& lin
           return load;
         },
         WallLoad{}, 1);
+  } else {
+    // Double: one cell at a time, any staircase shape (single takes general_chunk above).
+    using Codec = PopulationCodec<T>;
+    const auto general = [&](std::size_t i) -> WallLoad {
+      const std::size_t k0 = cells.first[i], k1 = cells.first[i + 1];
+      // The links' slots are found once: f_q* is read here and the reflected value written
+      // below (a cell has at most kQ - 1 links).
+      double post[kQ - 1];
+      T* to[kQ - 1];
+      Vec3 p = Vec3::Zero();  // momentum the links carry into the wall
+      for (std::size_t k = k0; k < k1; ++k) {
+        const int q = links.dir[k];
+        const auto slots = link_slots(pdf, now, links, k);
+        post[k - k0] = slots.from;
+        to[k - k0] = slots.to.p;
+        p += post[k - k0] * Vec3(kCx[q], kCy[q], kCz[q]);
+      }
+      Vec3 slip = Vec3::Zero();
+      if (cells.area[i] > 0) {
+        // The cell's density and velocity as its collision this step saw them.
+        const std::size_t c = std::size_t(cells.cell[i]);
+        const double rho = moments.rho[c];
+        const Vec3 u(double(moments.u[0][c]), double(moments.u[1][c]), double(moments.u[2][c]));
+        const Vec3& n = cells.normal[i];
+        const Vec3 ut = u - u.dot(n) * n;
+        const double speed = ut.norm();
+        Vec3 target = Vec3::Zero();
+        if (speed > 0) target = rho * cell_law.kinematic_stress(speed) * cells.area[i] / speed * ut;
+        const Vec3 r = 2.0 * p - target;
+        const double r1 = cells.e1[i].dot(r), r2 = cells.e2[i].dot(r);
+        const auto& mi = cells.m_pinv[i];
+        slip = ((mi[0] * r1 + mi[1] * r2) * cells.e1[i] + (mi[1] * r1 + mi[2] * r2) * cells.e2[i]) /
+               rho_w;
+        // Stability: the wall may slip along the flow, between no slip and the cell's own speed,
+        // never against it or past it. The bounds are inactive where the layer is in
+        // equilibrium (slip ~ u_t - 3 tau_w / rho_w, with tau_w between 0 and no slip's) and
+        // catch the transients in which the explicit slip would drive the wall cell.
+        if (speed > 0) {
+          const Vec3 t = ut / speed;
+          const double along = std::clamp(slip.dot(t), 0.0, speed);
+          Vec3 across = slip - slip.dot(t) * t;
+          if (across.norm() > speed) across *= speed / across.norm();
+          slip = along * t + across;
+        } else {
+          slip = Vec3::Zero();
+        }
+      }
+      // Sums in locals: accumulated in the returned struct they went through memory, a
+      // store-to-load chain per link (9 % of this function in perf).
+      Vec3 force = Vec3::Zero();
+      double mass = 0.0;
+      for (std::size_t k = k0; k < k1; ++k) {
+        const int q = links.dir[k];
+        const Vec3 cq(kCx[q], kCy[q], kCz[q]);
+        const double corr = -2.0 * kW[q] * rho_w * cq.dot(slip) / kCs2;
+        links.correction[k] = corr;
+        *to[k - k0] = Codec::store(post[k - k0] + corr, q);
+        force += (2.0 * post[k - k0] + corr) * cq;
+        mass += corr;
+      }
+      WallLoad load;
+      load.force = force;
+      load.torque = (cells.centre[i] - origin).cross(force);
+      load.mass = mass;
+      return load;
+    };
+    return deterministic_sum(
+        cells.block_first.size() - 1,
+        [&](std::size_t b) {
+          WallLoad load;
+          for (std::size_t u = cells.block_first[b]; u < cells.block_first[b + 1]; ++u)
+            if (cells.unit_flat[u])
+              load += apply_flat_run(pdf, now, links, cells, u, cell_law, moments, rho_w, origin);
+            else
+              load += general(cells.unit_first[u]);
+          return load;
+        },
+        WallLoad{}, 1);
   }
-  return deterministic_sum(
-      cells.block_first.size() - 1,
-      [&](std::size_t b) {
-        WallLoad load;
-        for (std::size_t u = cells.block_first[b]; u < cells.block_first[b + 1]; ++u)
-          if (cells.unit_flat[u])
-            load += apply_flat_run(pdf, now, links, cells, u, cell_law, moments, rho_w, origin);
-          else
-            load += general(cells.unit_first[u]);
-        return load;
-      },
-      WallLoad{}, 1);
 }
 
 template WallLoad apply_wall_function(PdfField<double>&, AaState, BounceBackLinks&,
