@@ -85,6 +85,13 @@ def slab_volume(z, r, lo, hi):
     return cap_volume(r, hi - (z - r)) - cap_volume(r, lo - (z - r))
 
 
+def bed_top(z, r, quantile=1.0):
+    """The top of a bed from its particles (centres z, radii r): the given quantile of the
+    particles' tops z + r (1.0: the highest particle, which one splashed particle sets; 0.99
+    leaves out the highest 1 %)."""
+    return float(np.quantile(z + r, quantile))
+
+
 def snapshots(run, t_from, t_to=math.inf):
     """(time, position, velocity, radius) of each particle snapshot of RUN/particles.h5 from
     t_from to t_to, in SI units."""

@@ -3,8 +3,13 @@
 vanwachem2001) with the measurements kept in results/validation/data/.
 
 From the run folder, over t >= --from:
-  - the mean bed height (timeseries.csv bed_height_m: the height below which 95 % of the
-    particles' volume lies) against the time mean of the measured bed height;
+  - the mean bed height against the time mean of the measured one. The measured height is the
+    top of the bed seen in the experiment's video: it swings from about 93 to 150 mm within
+    0.2 s as a bubble lifts the surface and erupts, which a height below which most of the
+    particles' volume lies cannot do. The goal compares the top of the highest particle (particle
+    snapshots), the reading the Lethe example that publishes these data compares with them; the
+    top without the highest 1 % of the particles and the height below which 95 % of the particle
+    volume lies (timeseries.csv bed_height_m) are reported beside it;
   - the pressure 45 mm above the distributor (the preset's taps are at 45 mm and at the outlet,
     where the pressure is held at 0): the dominant frequency of its fluctuation against the peak
     of the measured spectrum (2.4 Hz), and its standard deviation against the measured one;
@@ -30,14 +35,18 @@ PROBE_Z, BAND = 0.045, 0.0015  # [m] the probe height and the slab's half-thickn
 PROBE_X = (0.04, 0.05)  # [m] the middle 10 mm of the width
 
 
-def voidage_at_probe(run, t_from, t_to):
-    times, eps = [], []
+def snapshot_series(run, t_from, t_to):
+    """Per particle snapshot: its time, the voidage at the probe, the bed's top (highest particle)
+    and its top without the highest 1 %."""
+    times, eps, top, top99 = [], [], [], []
     for t, x, _, r in bc.snapshots(run, t_from, t_to):
         m = (x[:, 0] >= PROBE_X[0]) & (x[:, 0] < PROBE_X[1])
         vol = bc.slab_volume(x[m, 2], r[m], PROBE_Z - BAND, PROBE_Z + BAND).sum()
         times.append(t)
         eps.append(1.0 - vol / ((PROBE_X[1] - PROBE_X[0]) * DEPTH * 2 * BAND))
-    return np.array(times), np.array(eps)
+        top.append(bc.bed_top(x[:, 2], r))
+        top99.append(bc.bed_top(x[:, 2], r, 0.99))
+    return np.array(times), np.array(eps), np.array(top), np.array(top99)
 
 
 def main():
@@ -56,7 +65,7 @@ def main():
                  f"t = {a.t_from} s; at least 64 needed (let the run go on, or lower --from)")
     t, p, h = s["time_s"], s["pressure_drop_Pa"], s["bed_height_m"]
     f_lbdem, f_res = bc.dominant_frequency(t, p)
-    te, eps = voidage_at_probe(a.run, a.t_from, a.t_to)
+    te, eps, top, top99 = snapshot_series(a.run, a.t_from, a.t_to)
 
     mh = bc.read_csv_data("vanwachem2001_bed_height.csv")
     mp = bc.read_csv_data("vanwachem2001_relative_pressure.csv")
@@ -70,8 +79,12 @@ def main():
     esd_meas = float(np.sqrt(bc.time_mean(mv["t_s"], (mv["voidage"] - e_meas) ** 2)))
 
     rows = [
-        bc.goal_row("mean bed height", "m", h_meas, h.mean(), h.mean() - h_meas,
-                    "within 10 %", abs(h.mean() - h_meas) <= 0.10 * h_meas),
+        bc.goal_row("mean bed height (top of the highest particle)", "m", h_meas, top.mean(),
+                    top.mean() - h_meas, "within 10 %", abs(top.mean() - h_meas) <= 0.10 * h_meas),
+        bc.goal_row("mean bed height (top without the highest 1 % of the particles)", "m", h_meas,
+                    top99.mean(), top99.mean() - h_meas, "reported", None),
+        bc.goal_row("mean bed height (95 % of the particle volume below)", "m", h_meas, h.mean(),
+                    h.mean() - h_meas, "reported", None),
         bc.goal_row("dominant frequency of the pressure at 45 mm", "Hz", f_meas, f_lbdem,
                     f_lbdem - f_meas, f"within 20 % (resolution {f_res:.2g} Hz)",
                     abs(f_lbdem - f_meas) <= 0.20 * f_meas),
@@ -108,7 +121,10 @@ def main():
         ax[1].set_xlabel("f [Hz]")
         ax[1].set_ylabel("spectrum / its peak")
         ax[2].plot(mh["t_s"] - mh["t_s"][0], mh["h_m"], "k.-", label="measured")
-        ax[2].plot(t[m] - t[m][0], h[m], "r-", lw=0.8, label="lbdem")
+        ax[2].plot(t[m] - t[m][0], h[m], "r-", lw=0.8, label="lbdem, 95 % of the volume")
+        mt = te >= te[-1] - w
+        ax[2].plot(te[mt] - te[mt][0], top[mt], "b.-", lw=0.8, label="lbdem, highest particle")
+        ax[2].legend(fontsize=7)
         ax[2].set_xlabel("t - t0 [s]")
         ax[2].set_ylabel("bed height [m]")
         ax[3].plot(mv["t_s"] - mv["t_s"][0], mv["voidage"], "k-", lw=0.8, label="measured")

@@ -47,6 +47,13 @@ rng = np.random.default_rng(1)
 s = bc.mirror_scatter(x, v + rng.normal(0, 0.01, x.size), 0.044)
 check(f"noisy profile scatter {s}", abs(s - 0.01) < 0.0025)
 
+# The top of a bed of 100 particles whose tops lie at 1, 2, ..., 100 mm: the highest at 100 mm,
+# numpy's linear quantile at 0.99 between the 99th and 100th tops (99.01 mm).
+z = np.arange(1, 101) * 1e-3 - 5e-4
+r = np.full(100, 5e-4)
+check("bed top", abs(bc.bed_top(z, r) - 0.1) < 1e-15)
+check("bed top, 99 %", abs(bc.bed_top(z, r, 0.99) - 0.09901) < 1e-12)
+
 if failures:
     print("failed: " + "; ".join(failures))
     sys.exit(1)
