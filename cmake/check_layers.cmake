@@ -1,0 +1,57 @@
+# The layering of docs/architecture.md (Layers), checked on the sources: every target sees the
+# repository root as its include path, so a header of a layer above or beside compiles; this
+# script fails on such an include instead. Run by ctest ("layers: includes point one way"):
+#   cmake -DROOT=<repository root> -P cmake/check_layers.cmake
+# A folder may include itself and the layers listed for it; tests/ may include any layer.
+cmake_minimum_required(VERSION 3.20)
+if(NOT ROOT)
+  message(FATAL_ERROR "check_layers.cmake: set -DROOT=<repository root>")
+endif()
+
+set(allowed_core core)
+set(allowed_lbm core lbm)
+set(allowed_dem core dem)
+set(allowed_coarse_grain core dem coarse_grain)
+set(allowed_coupling core lbm dem coarse_grain coupling)
+set(allowed_scenarios core lbm dem coarse_grain coupling scenarios)
+set(allowed_tools core tools)
+set(allowed_bench core lbm dem coarse_grain coupling bench)
+set(layers core lbm dem coarse_grain coupling scenarios tools bench)
+
+set(violations "")
+set(checked 0)
+foreach(layer IN LISTS layers)
+  file(GLOB_RECURSE sources "${ROOT}/${layer}/*.cpp" "${ROOT}/${layer}/*.hpp")
+  foreach(src IN LISTS sources)
+    math(EXPR checked "${checked} + 1")
+    file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]*)\".*" "\\1" path "${line}")
+      file(RELATIVE_PATH rel "${ROOT}" "${src}")
+      if(path MATCHES "\\.\\./")
+        string(APPEND violations "  ${rel}: \"${path}\" (a relative path out of the folder)\n")
+        continue()
+      endif()
+      if(NOT path MATCHES "^([a-z_]+)/")
+        continue()  # a header beside the file, in its own folder
+      endif()
+      set(target "${CMAKE_MATCH_1}")
+      if(NOT target IN_LIST layers)
+        continue()  # not a layer of the project (a generated or third-party path)
+      endif()
+      if(NOT target IN_LIST allowed_${layer})
+        string(REPLACE ";" ", " may "${allowed_${layer}}")
+        string(APPEND violations "  ${rel}: \"${path}\" (${layer}/ may include ${may})\n")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(checked EQUAL 0)
+  message(FATAL_ERROR "check_layers.cmake: no sources found under ${ROOT}")
+endif()
+if(violations)
+  message(FATAL_ERROR "includes against the layering (docs/architecture.md, Layers):\n"
+                      "${violations}move the code to the lower layer, or pass the value in")
+endif()
+message(STATUS "layers: ${checked} files, every include points one way")
