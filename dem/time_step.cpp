@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 namespace lbdem::dem {
 
@@ -10,16 +11,11 @@ TimeScales time_scales(const ContactSettings& s, const std::vector<Material>& ma
                        const std::vector<int>& wall_materials, double r, double v) {
   TimeScales out{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                  ""};
+  const NormalVariant normal = normal_law(s.normal);  // the configured law's own contact time
   const auto consider = [&](const MaterialPair& mp, double r_star, double m_star,
                             const std::string& what) {
-    double tc;
-    if (s.normal == "linear") {
-      const double gamma =
-          2.0 * std::abs(restitution_beta(mp.restitution)) * std::sqrt(m_star * mp.stiffness);
-      tc = linear_contact_time(mp.stiffness, gamma, m_star);
-    } else {
-      tc = hertz_contact_time(mp.e_star, r_star, m_star, v);
-    }
+    const double tc = std::visit(
+        [&](auto law) { return decltype(law)::contact_time(mp, r_star, m_star, v); }, normal);
     if (tc < out.contact_time) out.contact_time = tc, out.where = what;
   };
   for (std::size_t a = 0; a < materials.size(); ++a) {

@@ -39,16 +39,26 @@ struct HertzMindlin {
   /// square root per contact instead of two.
   static double tangential_damping_ratio(const Params& p) { return p.t_ratio; }
 
-  static Params from(const MaterialPair& m) {
+  /// kt_ratio is the linear law's (k_t / k_n); Mindlin's k_t follows from G* and is not set.
+  static Params from(const MaterialPair& m, double /*kt_ratio*/) {
     const double b = std::abs(restitution_beta(m.restitution));
     return {m.e_star, m.g_star, std::sqrt(5.0) * b, 2.0 * std::sqrt(m.g_star / m.e_star)};
   }
+
+  /// Duration of a normal contact of this pair at impact speed v_impact, elastic (Johnson's):
+  /// what the time-step check and dem.steps_per_contact resolve.
+  static double contact_time(const MaterialPair& m, double r_star, double m_star, double v_impact);
 };
 
 /// Hertz contact duration at impact speed v (elastic): t_c = 2.868 (m*^2/(R* E*^2 v))^{1/5}
 /// (Johnson 1985, eq. 11.24).
 inline double hertz_contact_time(double e_star, double r_star, double m_star, double v) {
   return 2.868 * std::pow(m_star * m_star / (r_star * e_star * e_star * v), 0.2);
+}
+
+inline double HertzMindlin::contact_time(const MaterialPair& m, double r_star, double m_star,
+                                         double v_impact) {
+  return hertz_contact_time(m.e_star, r_star, m_star, v_impact);
 }
 
 /// Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766) (Li, Xu & Thornton 2005).

@@ -39,12 +39,23 @@ struct LinearSpringDashpot {
     return {m.stiffness, 2.0 * std::abs(restitution_beta(m.restitution)), kt_ratio, 0.0,
             std::sqrt(kt_ratio)};
   }
+
+  /// Duration of a normal contact of this pair (effective radius and mass), damped as from():
+  /// what the time-step check and dem.steps_per_contact resolve. Independent of the speed.
+  static double contact_time(const MaterialPair& m, double r_star, double m_star, double v_impact);
 };
 
 /// Contact duration of the linear law: pi / sqrt(k/m* - (gamma/2m*)^2).
 inline double linear_contact_time(double k, double gamma, double m_star) {
   const double w2 = k / m_star - (gamma / (2 * m_star)) * (gamma / (2 * m_star));
   return w2 > 0 ? kPi / std::sqrt(w2) : 0.0;
+}
+
+inline double LinearSpringDashpot::contact_time(const MaterialPair& m, double /*r_star*/,
+                                                double m_star, double /*v_impact*/) {
+  const double gamma =
+      2.0 * std::abs(restitution_beta(m.restitution)) * std::sqrt(m_star * m.stiffness);
+  return linear_contact_time(m.stiffness, gamma, m_star);
 }
 
 }  // namespace lbdem::dem

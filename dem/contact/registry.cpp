@@ -26,8 +26,12 @@ V pick(const std::string& name, const std::vector<std::string>& names, const cha
 }
 }  // namespace
 
+NormalVariant normal_law(const std::string& name) {
+  return pick<NormalVariant>(name, kNormalLaws, "contact.normal");
+}
+
 AnyLawTable make_law_table(const ContactSettings& s, const std::vector<Material>& materials) {
-  const auto nv = pick<NormalVariant>(s.normal, kNormalLaws, "contact.normal");
+  const auto nv = normal_law(s.normal);
   const auto rv = pick<RollingVariant>(s.rolling, kRollingModels, "contact.rolling");
   const auto cv = pick<CohesionVariant>(s.cohesion, kCohesionModels, "contact.cohesion");
   return std::visit(

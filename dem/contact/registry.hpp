@@ -4,7 +4,9 @@
 // ContactLaw and its per-material-pair parameters. The solver dispatches once per step with
 // std::visit.
 #include <string>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -24,9 +26,25 @@ struct ContactSettings {
   double h_max = 1e-5;   // van der Waals cut-off [m]
 };
 
-inline const std::vector<std::string> kNormalLaws = {"linear", "hertz_mindlin"};
-inline const std::vector<std::string> kRollingModels = {"none", "constant_torque", "epsd"};
-inline const std::vector<std::string> kCohesionModels = {"none", "van_der_waals"};
+// The models a config may name, one type each; the names below and every law table are derived
+// from these lists, so a model is added here and in its own header (docs/architecture.md, Adding a
+// normal contact law).
+using NormalVariant = std::variant<LinearSpringDashpot, HertzMindlin>;
+using RollingVariant = std::variant<NoRolling, ConstantTorqueRolling, EpsdRolling>;
+using CohesionVariant = std::variant<NoCohesion, VanDerWaals>;
+
+/// The `name` of each alternative of a variant, in its order.
+template <class V>
+std::vector<std::string> model_names() {
+  return []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::vector<std::string>{std::string(std::variant_alternative_t<I, V>::name)...};
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
+}
+
+inline const std::vector<std::string> kNormalLaws = model_names<NormalVariant>();
+inline const std::vector<std::string> kRollingModels = model_names<RollingVariant>();
+inline const std::vector<std::string> kCohesionModels = model_names<CohesionVariant>();
 
 /// Per-pair parameters of one law: particle-particle (nm x nm) and particle-wall (nm x n_wall_mat).
 template <class Law>
@@ -43,11 +61,7 @@ struct LawTable {
 template <class Law>
 typename Law::Params law_params(const MaterialPair& m, const ContactSettings& s) {
   typename Law::Params p{};
-  if constexpr (std::is_same_v<typename Law::Normal, LinearSpringDashpot>) {
-    p.normal = LinearSpringDashpot::from(m, s.kt_ratio);
-  } else {
-    p.normal = HertzMindlin::from(m);
-  }
+  p.normal = Law::Normal::from(m, s.kt_ratio);
   p.friction = m.friction;
   p.tangential_damping = s.tangential_damping;
   if constexpr (Law::Rolling::active) p.rolling = {m.rolling_friction, s.rolling_arm_factor};
@@ -55,25 +69,32 @@ typename Law::Params law_params(const MaterialPair& m, const ContactSettings& s)
   return p;
 }
 
-using NormalVariant = std::variant<LinearSpringDashpot, HertzMindlin>;
-using RollingVariant = std::variant<NoRolling, ConstantTorqueRolling, EpsdRolling>;
-using CohesionVariant = std::variant<NoCohesion, VanDerWaals>;
-
 template <class N, class R, class C>
 using TableOf = LawTable<ContactLaw<N, R, C>>;
 
-using AnyLawTable = std::variant<TableOf<LinearSpringDashpot, NoRolling, NoCohesion>,
-                                 TableOf<LinearSpringDashpot, NoRolling, VanDerWaals>,
-                                 TableOf<LinearSpringDashpot, ConstantTorqueRolling, NoCohesion>,
-                                 TableOf<LinearSpringDashpot, ConstantTorqueRolling, VanDerWaals>,
-                                 TableOf<LinearSpringDashpot, EpsdRolling, NoCohesion>,
-                                 TableOf<LinearSpringDashpot, EpsdRolling, VanDerWaals>,
-                                 TableOf<HertzMindlin, NoRolling, NoCohesion>,
-                                 TableOf<HertzMindlin, NoRolling, VanDerWaals>,
-                                 TableOf<HertzMindlin, ConstantTorqueRolling, NoCohesion>,
-                                 TableOf<HertzMindlin, ConstantTorqueRolling, VanDerWaals>,
-                                 TableOf<HertzMindlin, EpsdRolling, NoCohesion>,
-                                 TableOf<HertzMindlin, EpsdRolling, VanDerWaals>>;
+/// Every combination of the three lists as one variant of law tables (normal-major, then
+/// rolling, then cohesion): each is instantiated once, dispatched once per step with std::visit.
+template <class NV, class RV, class CV>
+struct LawProduct;
+template <class... N, class... R, class... C>
+struct LawProduct<std::variant<N...>, std::variant<R...>, std::variant<C...>> {
+  template <class Ni, class Ri>
+  using WithCohesion = std::tuple<TableOf<Ni, Ri, C>...>;
+  template <class Ni>
+  using WithRolling = decltype(std::tuple_cat(std::declval<WithCohesion<Ni, R>>()...));
+  template <class T>
+  struct AsVariant;
+  template <class... T>
+  struct AsVariant<std::tuple<T...>> {
+    using type = std::variant<T...>;
+  };
+  using type =
+      typename AsVariant<decltype(std::tuple_cat(std::declval<WithRolling<N>>()...))>::type;
+};
+using AnyLawTable = LawProduct<NormalVariant, RollingVariant, CohesionVariant>::type;
+
+/// The normal law of that name (InputError, key "contact.normal", for an unknown one).
+NormalVariant normal_law(const std::string& name);
 
 /// Builds the table for the named laws; materials double as wall materials (walls name one).
 /// Throws InputError (key "contact.normal" etc.) for unknown names.
