@@ -24,6 +24,7 @@ void Log::line(const std::string& s) {
 
 void Log::derived(const std::string& name, double value, const std::string& unit,
                   const std::string& comment) {
+  derived_.push_back({name, value, unit});
   char buf[256];
   std::snprintf(buf, sizeof buf, "  %-34s %14.6g %-8s %s", name.c_str(), value, unit.c_str(),
                 comment.c_str());

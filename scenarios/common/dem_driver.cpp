@@ -15,6 +15,7 @@
 #include "core/progress.hpp"
 #include "core/time_series.hpp"
 #include "scenarios/common/checkpoint_check.hpp"
+#include "scenarios/common/run_manifest.hpp"
 #include "scenarios/common/xdmf.hpp"
 
 namespace lbdem::scenarios {
@@ -399,6 +400,16 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0, bool fi
   if (const auto fault = checkpoint_fault(file))
     throw std::runtime_error("the checkpoint just written, " + file + ", does not verify (" +
                              *fault + "); the generation before is kept as " + prev);
+  // The manifest with the checkpoint it describes (its cost sums are the checkpoint's).
+  RunManifest m;
+  m.version = LBDEM_VERSION;
+  if (identity_) m.scenario = identity_->scenario, m.config_hash = identity_->hash();
+  m.time_s = solver_.time();
+  m.end_time_s = out_.end_time;
+  m.complete = final;
+  if (log_) m.derived = log_->derived_values();
+  m.cost = read_run_cost(file);
+  write_run_manifest(dir, m);
 }
 
 void DemDriver::write_checkpoint_file(const std::string& file, double stored0, bool final) const {

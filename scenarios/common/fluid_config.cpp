@@ -527,6 +527,7 @@ void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
                   to_text(n) + " cells, " +
                   to_text(n * (f.precision == "single" ? 76e-6 : 152e-6)) + " MB of " +
                   f.precision + " populations");
+  log.derived("gas cells", n, "", "(the lattice, solid cells included)");
   log.derived("cell size dx", f.dx, "m");
   // Edges that are not whole cells: where the gas walls sit against the particles' (cells_along),
   // in mm for the cells of beds and mills, in m for larger ones.

@@ -1,5 +1,7 @@
 #include "scenarios/common/study_case.hpp"
 
+#include "scenarios/common/run_manifest.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +17,7 @@
 #include "core/h5.hpp"
 #include "core/run_clock.hpp"
 #include "scenarios/common/run_cost.hpp"
+#include "scenarios/common/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
 
 namespace lbdem::scenarios {
@@ -159,11 +162,16 @@ void add_phase(PartCosts& p, const std::string& name, double seconds) {
 
 PartCosts part_costs(const std::string& dir) {
   PartCosts p;
-  const auto [wall, simulated] = read_timing(dir);
+  // The run's manifest (run.toml) holds its checkpoint's sums; a folder written before lbdem kept
+  // one has the study's own files (study_timing.txt, study_phases.txt).
+  const auto manifest = read_run_manifest(dir);
+  const RunCost* cost = manifest && manifest->cost ? &*manifest->cost : nullptr;
+  const auto [wall, simulated] =
+      cost ? std::pair{cost->wall_s, cost->to_s - cost->from_s} : read_timing(dir);
   if (!(wall > 0 && simulated > 0)) return p;
   p.total = wall / simulated;
   double sum = 0;
-  for (const auto& [name, sec] : read_phase_sums(dir)) {
+  for (const auto& [name, sec] : cost ? cost->phases : read_phase_sums(dir)) {
     add_phase(p, name, sec);
     sum += sec;
   }
@@ -219,20 +227,31 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
   else
     out = ",,";
   const PartCosts r = ref_dir.empty() ? PartCosts{} : part_costs(ref_dir);
-  const std::string log = dir + "/log.txt", ref_log = ref_dir.empty() ? "" : ref_dir + "/log.txt";
+  // A banner number from the run's manifest, or from its log where it has none (folders written
+  // before lbdem kept one).
+  const auto banner = [](const std::string& d, const std::string& key, const std::string& old_key,
+                         bool after_equals) {
+    if (d.empty()) return 0.0;
+    if (const auto m = read_run_manifest(d)) {
+      const double v = m->number(key);
+      return std::isnan(v) ? 0.0 : v;
+    }
+    return banner_number(d + "/log.txt", old_key, after_equals);
+  };
   auto ratio = [&](double a, double b) { return a > 0 && b > 0 ? num(a / b) : std::string(); };
   out += "," + ratio(r.total, p.total);
-  const double n = parcels > 0 ? parcels : banner_number(log, "particles");
-  const double n_ref = parcels_ref > 0 ? parcels_ref : banner_number(ref_log, "particles");
-  const double dt = banner_number(log, "time step dt"),
-               dt_ref = banner_number(ref_log, "time step dt");
+  const double n = parcels > 0 ? parcels : banner(dir, "particles", "particles", false);
+  const double n_ref =
+      parcels_ref > 0 ? parcels_ref : banner(ref_dir, "particles", "particles", false);
+  const double dt = banner(dir, "time step dt", "time step dt", false),
+               dt_ref = banner(ref_dir, "time step dt", "time step dt", false);
   const bool split = p.split && r.split;
   out += "," + (split ? ratio(r.dem, p.dem) : std::string()) + "," +
          (r.total > 0 ? ratio(n_ref * dt, n * dt_ref) : std::string());
-  const double cells = banner_number(log, "cells per axis", true),
-               cells_ref = banner_number(ref_log, "cells per axis", true);
-  const double gdt = banner_number(log, "gas time step dt"),
-               gdt_ref = banner_number(ref_log, "gas time step dt");
+  const double cells = banner(dir, "gas cells", "cells per axis", true),
+               cells_ref = banner(ref_dir, "gas cells", "cells per axis", true);
+  const double gdt = banner(dir, "gas time step dt", "gas time step dt", false),
+               gdt_ref = banner(ref_dir, "gas time step dt", "gas time step dt", false);
   out += "," + (split && r.gas > 0 ? ratio(r.gas, p.gas) : std::string()) + "," +
          (r.total > 0 ? ratio(cells_ref * gdt, cells * gdt_ref) : std::string());
   std::string bound;
