@@ -35,23 +35,23 @@ void CollisionStats::on_start(bool wall, double vn, double vt) {
   ++hist_vt_[wall][bin(std::abs(vt))];
 }
 
-void CollisionStats::add_closed(const ContactTally& t) {
-  closed_[0] += t.e_normal_damping;
-  closed_[1] += t.e_tangential_damping;
-  closed_[2] += t.e_sliding;
-  closed_[3] += t.e_rolling;
+void CollisionStats::add_dissipated(double normal_damping, double tangential_damping,
+                                    double sliding, double rolling) {
+  dissipated_[0] += normal_damping;
+  dissipated_[1] += tangential_damping;
+  dissipated_[2] += sliding;
+  dissipated_[3] += rolling;
 }
 
 void CollisionStats::on_end(const ContactTally& t, const ContactRecord& r, double t_end,
                             std::int64_t id_i, std::int64_t id_j, const Vec3& where) {
-  add_closed(t);
   const std::size_t c = grid_.cell_of(where);
   ++grid_count_[c];
-  grid_energy_[c] += t.dissipated();
+  grid_energy_[c] += t.e_dissipated;
   if (s_.rows && t_end >= s_.rows_t0 && t_end <= s_.rows_t1) {
     if (static_cast<std::int64_t>(rows_.size()) < s_.row_budget) {
       rows_.push_back({r.t_start, t_end, id_i, id_j, r.vn_impact, r.vt_impact, r.max_overlap,
-                       r.max_force, t.dissipated()});
+                       r.max_force, t.e_dissipated});
     } else {
       ++rows_dropped_;
     }
@@ -70,10 +70,10 @@ void CollisionStats::write(const std::string& path, double time) const {
   f.group("/totals");
   f.attr("collisions_pp", started_[0], "/totals");
   f.attr("collisions_pw", started_[1], "/totals");
-  f.attr("dissipated_normal_damping_J", closed_[0], "/totals");
-  f.attr("dissipated_tangential_damping_J", closed_[1], "/totals");
-  f.attr("dissipated_sliding_J", closed_[2], "/totals");
-  f.attr("dissipated_rolling_J", closed_[3], "/totals");
+  f.attr("dissipated_normal_damping_J", dissipated_[0], "/totals");
+  f.attr("dissipated_tangential_damping_J", dissipated_[1], "/totals");
+  f.attr("dissipated_sliding_J", dissipated_[2], "/totals");
+  f.attr("dissipated_rolling_J", dissipated_[3], "/totals");
   f.attr("time_s", time, "/totals");
   f.attr("rows_dropped_over_budget", rows_dropped_, "/totals");
   f.group("/grid");
@@ -121,7 +121,7 @@ void CollisionStats::save(H5Out& out, const std::string& g) const {
     out.write(g + "/hist_vt" + std::to_string(w), hist_vt_[w]);
   }
   out.write(g + "/started", std::vector<std::int64_t>{started_[0], started_[1], rows_dropped_});
-  out.write(g + "/closed", std::vector<double>(closed_, closed_ + 4));
+  out.write(g + "/dissipated", std::vector<double>(dissipated_, dissipated_ + 4));
   out.write(g + "/grid_count", grid_count_);
   out.write(g + "/grid_energy", grid_energy_);
   std::vector<double> rows;
@@ -150,9 +150,9 @@ void CollisionStats::load(const H5In& in, const std::string& g) {
   const auto st = in.int64s(g + "/started");
   fits(st.size(), 3, "counts");
   started_[0] = st[0], started_[1] = st[1], rows_dropped_ = st[2];
-  const auto cl = in.doubles(g + "/closed");
-  fits(cl.size(), 4, "closed energies");
-  std::copy(cl.begin(), cl.end(), closed_);
+  const auto cl = in.doubles(g + "/dissipated");
+  fits(cl.size(), 4, "dissipated energies");
+  std::copy(cl.begin(), cl.end(), dissipated_);
   const auto count = in.int64s(g + "/grid_count");
   const auto energy = in.doubles(g + "/grid_energy");
   fits(count.size(), grid_count_.size(), "grid cells (output.collisions.grid_cells)");

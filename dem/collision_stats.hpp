@@ -40,10 +40,11 @@ class CollisionStats {
   std::int64_t started_pp() const { return started_[0]; }
   std::int64_t started_pw() const { return started_[1]; }
   std::int64_t rows_dropped() const { return rows_dropped_; }
-  /// Energies of finished contacts by mechanism [J]: normal damping, tangential damping, sliding,
-  /// rolling.
-  const double* closed_energy() const { return closed_; }
-  void add_closed(const ContactTally& t);
+  /// Energy dissipated by all contacts so far, by mechanism [J]: normal damping, tangential
+  /// damping, sliding, rolling (DemSolver integrates it each step).
+  const double* dissipated() const { return dissipated_; }
+  void add_dissipated(double normal_damping, double tangential_damping, double sliding,
+                      double rolling);
 
   void write(const std::string& path, double time) const;  // collisions.h5, atomically
   void save(H5Out& out, const std::string& group) const;
@@ -55,7 +56,7 @@ class CollisionStats {
   std::vector<double> edges_;  // impact speed bin edges [m/s]
   std::vector<std::int64_t> hist_vn_[2], hist_vt_[2];
   std::int64_t started_[2] = {0, 0};
-  double closed_[4] = {0, 0, 0, 0};
+  double dissipated_[4] = {0, 0, 0, 0};
   CellGrid grid_;
   std::vector<std::int64_t> grid_count_;
   std::vector<double> grid_energy_;

@@ -10,7 +10,7 @@ namespace lbdem::dem {
 
 namespace {
 // All are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
-constexpr std::size_t kTallyWidth = 8, kRow = 13;  // a checkpoint row: the tally, then the record
+constexpr std::size_t kTallyWidth = 3, kRow = 8;  // a checkpoint row: the tally, then the record
 static_assert(sizeof(ContactHistory) == 8 * sizeof(double) &&
               sizeof(ContactTally) == kTallyWidth * sizeof(double) &&
               sizeof(ContactTally) + sizeof(ContactRecord) == kRow * sizeof(double));
@@ -27,8 +27,7 @@ std::vector<T> unflatten(const std::vector<double>& d) {
   if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), d.data(), out.size() * sizeof(T));
   return out;
 }
-// A contact's tally and impact record are stored as one row of 13 doubles, as before they were
-// split in memory, so that checkpoints of either build resume in the other.
+// A contact's tally and impact record are stored as one row of 8 doubles.
 std::vector<double> flatten(const std::vector<ContactTally>& t,
                             const std::vector<ContactRecord>& r) {
   if (t.size() != r.size())
@@ -65,9 +64,10 @@ void DemSolver::save(H5Out& f) const {
   f.attr("next_id", next_id_, "/dem");
   f.attr("need_rebuild", std::int64_t(need_rebuild_), "/dem");
   f.write("/dem/accounts",
-          std::vector<double>{stiffness_closed_, wall_work_, wall_power_prev_, inserted_, removed_,
+          std::vector<double>{stiffness_energy_, wall_work_, wall_power_prev_, inserted_, removed_,
                               mass_removed_, max_radius_, external_work_, external_power_prev_,
-                              double(track_external_)});
+                              double(track_external_), p_normal_damping_prev_,
+                              p_tangential_damping_prev_});
   f.write("/dem/x", p_.x);
   f.write("/dem/v", p_.v);
   f.write("/dem/omega", p_.omega);
@@ -138,9 +138,11 @@ void DemSolver::load(const H5In& f) {
   next_id_ = f.attr_int("next_id", "/dem");
   need_rebuild_ = f.attr_int("need_rebuild", "/dem") != 0;
   const auto acc = f.doubles("/dem/accounts");
-  stiffness_closed_ = acc[0], wall_work_ = acc[1], wall_power_prev_ = acc[2], inserted_ = acc[3];
+  if (acc.size() != 12) throw std::runtime_error("checkpoint is inconsistent: /dem/accounts");
+  stiffness_energy_ = acc[0], wall_work_ = acc[1], wall_power_prev_ = acc[2], inserted_ = acc[3];
   removed_ = acc[4], mass_removed_ = acc[5], max_radius_ = acc[6];
   external_work_ = acc[7], external_power_prev_ = acc[8], track_external_ = acc[9] != 0;
+  p_normal_damping_prev_ = acc[10], p_tangential_damping_prev_ = acc[11];
   p_.x = f.vec3s("/dem/x");
   p_.v = f.vec3s("/dem/v");
   p_.omega = f.vec3s("/dem/omega");

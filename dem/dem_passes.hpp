@@ -1,6 +1,7 @@
 #pragma once
 // The two force passes of DemSolver::step, templated on the contact law (one instantiation per law
 // combination, chosen once per step by std::visit). Private to dem_solver.cpp.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -9,45 +10,47 @@
 
 namespace lbdem::dem {
 
-/// Books one evaluation into the contact's tally, impact record and state bits. Damping energy is
-/// integrated with the trapezoidal rule over the powers at consecutive steps (second order; the
-/// velocity-Verlet energy error is of the same order, docs/physics.md); sliding and rolling losses
-/// are the energy the cap removed from the springs in the step; stiffness-change energy is booked
-/// apart.
+/// Books one evaluation into the contact's tally, impact record and state bits, and its rates into
+/// the block's sums. The contact's own dissipation integrates its damping power with the
+/// trapezoidal rule over consecutive steps (second order; the velocity-Verlet energy error is of
+/// the same order, docs/physics.md) and adds the energy the cap removed from the springs in the
+/// step (sliding, rolling); DemSolver integrates the block sums the same way by mechanism, which
+/// equals the sum over contacts (the rule is linear; a contact that starts or ends adds a zero
+/// power at the other end).
 template <bool kRolling>
 inline void book(ContactTally& t, ContactRecord& r, std::uint8_t& state, const ContactForce& c,
-                 const ContactGeometry& g, double time, double dt, bool extremes) {
+                 const ContactGeometry& g, double time, double dt, bool extremes,
+                 EnergyRates& rates) {
   const std::uint8_t old = state;
   const bool touch = g.delta > 0;
   std::uint8_t st = 0;
   if (touch) {
     if (!(old & kTouching)) {
       const double vn = g.v_rel.dot(g.n);
-      const double u = t.u_elastic;
-      t = ContactTally{};
-      t.u_elastic = u;
+      t.e_dissipated = t.p_damping = 0;
       r = ContactRecord{.t_start = time, .vn_impact = vn, .vt_impact = (g.v_rel - vn * g.n).norm()};
       st |= kStarted;
     }
-    t.e_normal_damping += 0.5 * dt * (t.p_normal_damping + c.p_normal_damping);
-    t.e_tangential_damping += 0.5 * dt * (t.p_tangential_damping + c.p_tangential_damping);
-    t.p_normal_damping = c.p_normal_damping;
-    t.p_tangential_damping = c.p_tangential_damping;
-    t.e_sliding += c.e_sliding;
-    if constexpr (kRolling) t.e_rolling += c.e_rolling;
+    const double p = c.p_normal_damping + c.p_tangential_damping;
+    t.e_dissipated += 0.5 * dt * (t.p_damping + p) + c.e_sliding;
+    if constexpr (kRolling) t.e_dissipated += c.e_rolling;
+    t.p_damping = p;
+    rates.p_normal_damping += c.p_normal_damping;
+    rates.p_tangential_damping += c.p_tangential_damping;
+    rates.e_sliding += c.e_sliding;
+    if constexpr (kRolling) rates.e_rolling += c.e_rolling;
     if (extremes) {  // only the opt-in per-contact rows report them
       r.max_overlap = std::max(r.max_overlap, g.delta);
       r.max_force = std::max(r.max_force, c.fn);
     }
     st |= kTouching | kInteracting;
   } else if (old & kTouching) {
-    t.e_normal_damping += 0.5 * dt * t.p_normal_damping;
-    t.e_tangential_damping += 0.5 * dt * t.p_tangential_damping;
-    t.p_normal_damping = t.p_tangential_damping = 0;
+    t.e_dissipated += 0.5 * dt * t.p_damping;
+    t.p_damping = 0;
     st |= kEnded;
   }
   if (!touch && c.force.squaredNorm() > 0) st |= kInteracting;
-  t.e_stiffness += c.e_stiffness;
+  rates.e_stiffness += c.e_stiffness;
   t.u_elastic = c.u_elastic;
   state = st;
 }
@@ -71,7 +74,7 @@ template <class Table>
 LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
                                       const Predicted& pr, const DemSettings& s, PairList& pl,
                                       double time, std::size_t k, const Vec3& d, double r2,
-                                      Vec3& f_i, Vec3& t_i) {
+                                      Vec3& f_i, Vec3& t_i, EnergyRates& rates) {
   using Law = typename Table::law_type;
   const double dt = s.dt;
   const std::uint32_t i = pl.i[k], j = pl.j[k];
@@ -92,7 +95,7 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
     pl.j_force[slot] = -c.force;
     pl.j_torque[slot] = Vec3::Zero();
     book<Law::Rolling::active>(pl.tally[k], pl.record[k], pl.state[k], c, g, time, dt,
-                               s.collisions.rows);
+                               s.collisions.rows, rates);
     if (pl.state[k] & kInteracting) f_i += c.force;
     return;
   }
@@ -117,47 +120,66 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   pl.j_force[slot] = -c.force;
   pl.j_torque[slot] = aj * tc - c.m_roll;
   book<Law::Rolling::active>(pl.tally[k], pl.record[k], pl.state[k], c, g, time, dt,
-                             s.collisions.rows);
+                             s.collisions.rows, rates);
   if (pl.state[k] & kInteracting) f_i += c.force, t_i += ai * tc + c.m_roll;
 }
 
-/// The pair pass over rows [i0, i1), in a function of its own (core/thread_ranges.hpp: why; pr
-/// by value for the same reason: the caller's copy sits on the master thread's stack).
+/// Rows (particles) per block of the energy sums: the passes hand each thread whole blocks, so a
+/// block's sum, and the sum over blocks in block order, is the same on any thread count.
+inline constexpr std::size_t kEnergyBlock = 256;
+
+inline std::size_t energy_blocks(std::size_t n) {
+  return (n + kEnergyBlock - 1) / kEnergyBlock;
+}
+
+/// The pair pass over the rows of blocks [b0, b1), in a function of its own
+/// (core/thread_ranges.hpp: why; pr by value for the same reason: the caller's copy sits on the
+/// master thread's stack).
 template <class Table>
 [[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted pr,
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
-                                 std::size_t i0, std::size_t i1) {
+                                 EnergyRates* rates, std::size_t b0, std::size_t b1) {
   const double range = tab.range;
   const Domain& dom = s.domain;
   const bool per = dom.any_periodic();
-  // The distance test stays in the loop: most listed pairs are in the skin only, and the kernel's
-  // large frame is set up just for those that interact.
-  for (std::size_t i = i0; i < i1; ++i) {
-    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-    for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
-      const std::uint32_t j = pl.j[k];
-      Vec3 d = p.x[j] - p.x[i];
-      if (per) d = dom.min_image(d);
-      const double r2 = d.squaredNorm();
-      const double reach = p.radius[i] + p.radius[j] + range;
-      if (r2 >= reach * reach && !pl.state[k]) continue;
-      pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t);
+  const std::size_t n = p.size();
+  for (std::size_t b = b0; b < b1; ++b) {
+    EnergyRates block;
+    // The distance test stays in the loop: most listed pairs are in the skin only, and the
+    // kernel's large frame is set up just for those that interact.
+    for (std::size_t i = b * kEnergyBlock; i < std::min(n, (b + 1) * kEnergyBlock); ++i) {
+      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+      for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
+        const std::uint32_t j = pl.j[k];
+        Vec3 d = p.x[j] - p.x[i];
+        if (per) d = dom.min_image(d);
+        const double r2 = d.squaredNorm();
+        const double reach = p.radius[i] + p.radius[j] + range;
+        if (r2 >= reach * reach && !pl.state[k]) continue;
+        pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t, block);
+      }
+      sums.f[i] = f;
+      sums.t[i] = t;
     }
-    sums.f[i] = f;
-    sums.t[i] = t;
+    rates[b] = block;
   }
 }
 
 /// Pairs are taken row by row (all pairs with the same i in one thread, in ascending j), so the
 /// forces on i are summed right here in a fixed order; the particle pass gathers only the j side.
+/// rates: one EnergyRates per block of kEnergyBlock rows.
 template <class Table>
 void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& pr,
-                   const DemSettings& s, PairList& pl, double time, RowSums& sums) {
+                   const DemSettings& s, PairList& pl, double time, RowSums& sums,
+                   std::vector<EnergyRates>& rates) {
   const std::size_t n = p.size();
   sums.f.resize(n);
   sums.t.resize(n);
-  for_thread_ranges(
-      n, [&](std::size_t i0, std::size_t i1) { pair_rows(tab, p, pr, s, pl, time, sums, i0, i1); });
+  rates.assign(energy_blocks(n), EnergyRates{});
+  EnergyRates* r = rates.data();
+  for_thread_ranges(rates.size(), [&](std::size_t b0, std::size_t b1) {
+    pair_rows(tab, p, pr, s, pl, time, sums, r, b0, b1);
+  });
 }
 
 /// Contact of particle k with wall entry e, given where the wall is seen from the centre.
@@ -165,7 +187,7 @@ template <class Law, class Params>
 void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, const Vec3& vk,
                   const Vec3& wk, const Vec3& vh, const Vec3& wh, const Vec3& n, double dist,
                   const Vec3& wall_velocity, const Vec3& origin, WallContactList& wc, std::size_t e,
-                  double time, double dt, bool rows, Vec3& f, Vec3& tq) {
+                  double time, double dt, bool rows, Vec3& f, Vec3& tq, EnergyRates& rates) {
   ContactGeometry g;
   g.n = n;
   g.delta = p.radius[k] - dist;
@@ -187,14 +209,15 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
   // (it needs the wall's spin, and mu_r is small).
   wc.wall_torque[e] = (point - origin).cross(-c.force) - c.m_roll;
   wc.power[e] = c.force.dot(wall_velocity);
-  book<Law::Rolling::active>(wc.tally[e], wc.record[e], wc.state[e], c, g, time, dt, rows);
+  book<Law::Rolling::active>(wc.tally[e], wc.record[e], wc.state[e], c, g, time, dt, rows, rates);
 }
 
 template <class Table>
 LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, const Predicted& pr,
                                           const RowSums& sums, const DemSettings& s,
                                           const std::vector<Wall>& walls, const PairList& pl,
-                                          WallContactList& wc, double time, std::size_t k) {
+                                          WallContactList& wc, double time, std::size_t k,
+                                          EnergyRates& rates) {
   using Law = typename Table::law_type;
   const double dt = s.dt, h = 0.5 * dt, range = tab.range;
   const Vec3& vk = pr.v[k];
@@ -243,19 +266,19 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
         const double dist = std::sqrt(hits[m].closest.dist2);
         wall_contact<Law>(prm, p, k, vk, wk, vh, wh, d / dist, dist,
                           mesh->motion.velocity_at(hits[m].closest.point, time), w.torque_origin,
-                          wc, q, time, dt, s.collisions.rows, f, tq);
+                          wc, q, time, dt, s.collisions.rows, f, tq, rates);
       }
       for (std::size_t q = e; q < e1; ++q)  // entries that stopped interacting: close them
         if (!kept_entry[q - e] && wc.state[q])
           wall_contact<Law>(prm, p, k, vk, wk, vh, wh, Vec3::UnitZ(), 1e300, Vec3::Zero(),
-                            w.torque_origin, wc, q, time, dt, s.collisions.rows, f, tq);
+                            w.torque_origin, wc, q, time, dt, s.collisions.rows, f, tq, rates);
       e = e1;
     } else {
       const WallPoint wp = analytic_wall_point(w, p.x[k], time);
       if (p.radius[k] - wp.dist > -range || wc.state[e])
         wall_contact<Law>(prm, p, k, vk, wk, vh, wh, wp.n, std::min(wp.dist, 1e300),
                           wp.wall_velocity, w.torque_origin, wc, e, time, dt, s.collisions.rows, f,
-                          tq);
+                          tq, rates);
       ++e;
     }
   }
@@ -269,23 +292,32 @@ LBDEM_FLATTEN inline void particle_kernel(const Table& tab, ParticleArrays& p, c
   p.omega[k] += (h / p.inertia[k]) * tq;
 }
 
-/// The particle pass over [k0, k1), as pair_rows.
+/// The particle pass over the particles of blocks [b0, b1), as pair_rows.
 template <class Table>
 [[gnu::noinline]] void particle_range(const Table& tab, ParticleArrays& p, const Predicted pr,
                                       const RowSums& sums, const DemSettings& s,
                                       const std::vector<Wall>& walls, const PairList& pl,
-                                      WallContactList& wc, double time, std::size_t k0,
-                                      std::size_t k1) {
-  for (std::size_t k = k0; k < k1; ++k)
-    particle_kernel(tab, p, pr, sums, s, walls, pl, wc, time, k);
+                                      WallContactList& wc, double time, EnergyRates* rates,
+                                      std::size_t b0, std::size_t b1) {
+  const std::size_t n = p.size();
+  for (std::size_t b = b0; b < b1; ++b) {
+    EnergyRates block;
+    for (std::size_t k = b * kEnergyBlock; k < std::min(n, (b + 1) * kEnergyBlock); ++k)
+      particle_kernel(tab, p, pr, sums, s, walls, pl, wc, time, k, block);
+    rates[b] = block;
+  }
 }
 
+/// rates: the wall contacts' EnergyRates, one per block of kEnergyBlock particles.
 template <class Table>
 void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr,
                        const RowSums& sums, const DemSettings& s, const std::vector<Wall>& walls,
-                       const PairList& pl, WallContactList& wc, double time) {
-  for_thread_ranges(p.size(), [&](std::size_t k0, std::size_t k1) {
-    particle_range(tab, p, pr, sums, s, walls, pl, wc, time, k0, k1);
+                       const PairList& pl, WallContactList& wc, double time,
+                       std::vector<EnergyRates>& rates) {
+  rates.assign(energy_blocks(p.size()), EnergyRates{});
+  EnergyRates* r = rates.data();
+  for_thread_ranges(rates.size(), [&](std::size_t b0, std::size_t b1) {
+    particle_range(tab, p, pr, sums, s, walls, pl, wc, time, r, b0, b1);
   });
 }
 

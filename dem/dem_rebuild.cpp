@@ -89,37 +89,26 @@ void DemSolver::rebuild() {
   wc_ = WallContactList{};
 
   build_pairs(p_.x, p_.radius, dom, cells_, extra, pairs_);
-  std::vector<ContactTally> dropped;
-  carry_over(old_pairs, inv, pairs_, dropped);
+  carry_over(old_pairs, inv, pairs_);
   build_wall_list(cells_, extra);
 
   // Wall contacts carry over by (particle, wall, triangle): distinct old entries go to distinct
-  // new ones, so in parallel; those not carried are then booked in entry order.
+  // new ones, so in parallel.
   const std::size_t nwc = old_wc.size();
-  std::vector<std::uint8_t> carried(nwc, 1);
-  std::size_t n_lost = 0;
-#pragma omp parallel for schedule(static) reduction(+ : n_lost) if (nwc >= kMinParallel)
+#pragma omp parallel for schedule(static) if (nwc >= kMinParallel)
   for (std::size_t e = 0; e < nwc; ++e) {
     if (!old_wc.state[e]) continue;
     const std::uint32_t q = inv[old_wc.particle[e]];
-    bool found = false;
     if (q != kGone)
       for (std::size_t f = wc_.first[q]; f < wc_.first[q + 1]; ++f)
         if (wc_.wall[f] == old_wc.wall[e] && wc_.tri[f] == old_wc.tri[e]) {
           wc_.history[f] = old_wc.history[e], wc_.tally[f] = old_wc.tally[e];
           wc_.record[f] = old_wc.record[e], wc_.state[f] = old_wc.state[e];
-          found = true;
           break;
         }
-    carried[e] = found;
-    n_lost += !found;
   }
-  for (std::size_t e = 0; e < nwc && n_lost > 0; ++e)
-    if (!carried[e]) dropped.push_back(old_wc.tally[e]), --n_lost;
-  for (const auto& t : dropped) {
-    stats_.add_closed(t);
-    stiffness_closed_ += t.e_stiffness;
-  }
+  // Contacts not carried (a partner removed, a wall entry gone) end here: the energy they
+  // dissipated is in the ledgers already (book_energy), and their stored energy leaves with them.
 
   x_ref_ = p_.x;
   wall_ref_.assign(walls_.size(), {});

@@ -134,6 +134,7 @@ void DemSolver::step() {
       },
       law_);
   event_scan();
+  book_energy();
   sum_wall_loads();
   if (track_external_) {
     const double power = deterministic_sum(
@@ -146,12 +147,13 @@ void DemSolver::step() {
 
 template <class Table>
 void DemSolver::pair_pass(const Table& t) {
-  run_pair_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, pairs_, t_, row_sums_);
+  run_pair_pass(t, p_, Predicted{v_pred_, w_pred_}, s_, pairs_, t_, row_sums_, pair_rates_);
 }
 
 template <class Table>
 void DemSolver::particle_pass(const Table& t) {
-  run_particle_pass(t, p_, Predicted{v_pred_, w_pred_}, row_sums_, s_, walls_, pairs_, wc_, t_);
+  run_particle_pass(t, p_, Predicted{v_pred_, w_pred_}, row_sums_, s_, walls_, pairs_, wc_, t_,
+                    wall_rates_);
 }
 
 void DemSolver::event_scan() {
@@ -164,10 +166,7 @@ void DemSolver::event_scan() {
       if (st & kEnded) {
         const auto [a, b] = ids(k);
         stats_.on_end(tally[k], record[k], t_, a, b, where(k));
-        stiffness_closed_ += tally[k].e_stiffness;
-        const double u = tally[k].u_elastic;
-        tally[k] = ContactTally{};
-        tally[k].u_elastic = u;  // cohesion may still hold energy after the touch ends
+        tally[k].e_dissipated = 0;  // u_elastic stays: cohesion may hold energy after the touch
         record[k] = ContactRecord{};
       }
       state[k] = st & (kInteracting | kTouching);
@@ -185,6 +184,26 @@ void DemSolver::event_scan() {
         return std::pair{p_.id[wc_.particle[k]], std::int64_t(-1 - wc_.wall[k])};
       },
       [&](std::size_t k) { return wc_.contact_point[k]; });
+}
+
+void DemSolver::book_energy() {
+  // The step's rates over all contacts, the pair blocks then the wall blocks, in block order.
+  EnergyRates r;
+  for (const auto* v : {&pair_rates_, &wall_rates_})
+    for (const EnergyRates& b : *v) {
+      r.p_normal_damping += b.p_normal_damping;
+      r.p_tangential_damping += b.p_tangential_damping;
+      r.e_sliding += b.e_sliding;
+      r.e_rolling += b.e_rolling;
+      r.e_stiffness += b.e_stiffness;
+    }
+  const double h = 0.5 * s_.dt;  // trapezoidal rule over the dashpots' total powers
+  stats_.add_dissipated(h * (p_normal_damping_prev_ + r.p_normal_damping),
+                        h * (p_tangential_damping_prev_ + r.p_tangential_damping), r.e_sliding,
+                        r.e_rolling);
+  p_normal_damping_prev_ = r.p_normal_damping;
+  p_tangential_damping_prev_ = r.p_tangential_damping;
+  stiffness_energy_ += r.e_stiffness;
 }
 
 void DemSolver::sum_wall_loads() {
@@ -243,27 +262,17 @@ EnergyTotals DemSolver::energy() const {
       n, [&](std::size_t k) { return 0.5 * p_.inertia[k] * p_.omega[k].squaredNorm(); }, 0.0);
   e.potential = deterministic_sum(
       n, [&](std::size_t k) { return -p_.mass[k] * s_.gravity.dot(p_.x[k]); }, 0.0);
-  using Acc = Eigen::Matrix<double, 6, 1>;  // elastic, nd, td, sliding, rolling, stiffness
-  const auto tally_sum = [](const std::vector<ContactTally>& t) {
+  const auto stored = [](const std::vector<ContactTally>& t) {
     return deterministic_sum(
-        t.size(),
-        [&](std::size_t k) {
-          const auto& c = t[k];
-          Acc a;
-          a << c.u_elastic, c.e_normal_damping, c.e_tangential_damping, c.e_sliding, c.e_rolling,
-              c.e_stiffness;
-          return a;
-        },
-        Acc(Acc::Zero()));
+        t.size(), [&](std::size_t k) { return t[k].u_elastic; }, 0.0);
   };
-  const Acc a = tally_sum(pairs_.tally) + tally_sum(wc_.tally);
-  const double* closed = stats_.closed_energy();
-  e.elastic = a[0];
-  e.normal_damping = closed[0] + a[1];
-  e.tangential_damping = closed[1] + a[2];
-  e.sliding = closed[2] + a[3];
-  e.rolling = closed[3] + a[4];
-  e.stiffness_change = stiffness_closed_ + a[5];
+  e.elastic = stored(pairs_.tally) + stored(wc_.tally);
+  const double* d = stats_.dissipated();
+  e.normal_damping = d[0];
+  e.tangential_damping = d[1];
+  e.sliding = d[2];
+  e.rolling = d[3];
+  e.stiffness_change = stiffness_energy_;
   e.wall_work = wall_work_;
   e.external_work = external_work_;
   e.inserted = inserted_;

@@ -129,7 +129,7 @@ class DemSolver {
 
   /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs
   /// change).
-  static constexpr int kCheckpointLayout = 3;
+  static constexpr int kCheckpointLayout = 4;
   void save(H5Out& out) const;
   void load(const H5In& in);
 
@@ -143,6 +143,7 @@ class DemSolver {
   template <class Table>
   void particle_pass(const Table& t);
   void event_scan();
+  void book_energy();
   void sum_wall_loads();
   double wall_displacement() const;
 
@@ -165,6 +166,7 @@ class DemSolver {
   std::vector<Vec3> x_ref_;            // positions at the last rebuild
   std::vector<Vec3> v_pred_, w_pred_;  // end-of-step predicted velocities
   RowSums row_sums_;
+  std::vector<EnergyRates> pair_rates_, wall_rates_;  // the step's energy rates per block
   std::vector<double> wall_partials_;  // block partials of the wall loads (reused) // i-side pair
                                        // sums of the step
   std::vector<std::vector<Vec3>>
@@ -174,8 +176,11 @@ class DemSolver {
   std::int64_t step_ = 0, rebuilds_ = 0, lost_ = 0, next_id_ = 0;
   bool need_rebuild_ = true;
   double max_radius_ = 0;
-  // Energy sources and sinks accumulated outside the contacts.
-  double stiffness_closed_ = 0, wall_work_ = 0, wall_power_prev_ = 0, inserted_ = 0, removed_ = 0;
+  // Energy sources and sinks: the contacts' spring energy entered by stiffness change, and the
+  // work of walls and of insertion and removal; the dashpots' total powers of the last step
+  // (book_energy: their trapezoidal rule; the dissipated energies are kept in stats_).
+  double stiffness_energy_ = 0, wall_work_ = 0, wall_power_prev_ = 0, inserted_ = 0, removed_ = 0;
+  double p_normal_damping_prev_ = 0, p_tangential_damping_prev_ = 0;
   double mass_removed_ = 0;
   bool track_external_ = false;
   double speed_limit2_ = std::numeric_limits<double>::infinity();

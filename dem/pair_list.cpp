@@ -291,40 +291,25 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
   out.build_transpose(np);
 }
 
-void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh,
-                std::vector<ContactTally>& dropped) {
+void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh) {
   constexpr auto kGone = std::numeric_limits<std::uint32_t>::max();
-  // Where each old pair's state goes: a fresh pair, nowhere (not interacting), or dropped (a
-  // partner removed, or beyond the cut-off, which cannot happen while the skin holds). Distinct
-  // old pairs are distinct fresh pairs, so the copies run in parallel without conflicts; the
-  // dropped tallies are then listed serially in a fixed order (removed partners by old index,
-  // the rest by new (a, b)), the same for any thread count.
-  constexpr std::uint32_t kNone = kGone, kRemoved = kGone - 1, kBeyond = kGone - 2;
+  // Each interacting old pair's state goes to its fresh pair, or nowhere (a partner removed, or
+  // beyond the cut-off, which cannot happen while the skin holds: the contact ends there; its
+  // dissipated energy is in DemSolver's ledgers already). Distinct old pairs are distinct fresh
+  // pairs, so the copies run in parallel without conflicts.
   const std::size_t n = old.size();
-  std::vector<std::uint32_t> dest(n);
-  std::size_t n_dropped = 0;
-#pragma omp parallel for schedule(static) reduction(+ : n_dropped) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
-    dest[k] = kNone;
     if (!old.state[k]) continue;
     const std::uint32_t a0 = inv[old.i[k]], b0 = inv[old.j[k]];
-    if (a0 == kGone || b0 == kGone) {
-      dest[k] = kRemoved;
-      ++n_dropped;
-      continue;
-    }
+    if (a0 == kGone || b0 == kGone) continue;
     const bool flip = b0 < a0;  // history is "i relative to j"
     const std::uint32_t a = flip ? b0 : a0, b = flip ? a0 : b0;
     const auto beg = fresh.j.begin() + fresh.first[a];
     const auto end = fresh.j.begin() + fresh.first[a + 1];
     const auto pos = std::lower_bound(beg, end, b);
-    if (pos == end || *pos != b) {
-      dest[k] = kBeyond;
-      ++n_dropped;
-      continue;
-    }
+    if (pos == end || *pos != b) continue;
     const auto f = static_cast<std::size_t>(pos - fresh.j.begin());
-    dest[k] = static_cast<std::uint32_t>(f);
     ContactHistory h = old.history[k];
     if (flip) h.xi = -h.xi, h.theta = -h.theta;
     fresh.history[f] = h;
@@ -332,21 +317,6 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
     fresh.record[f] = old.record[k];
     fresh.state[f] = old.state[k];
   }
-  if (n_dropped == 0) return;  // the usual case: no serial pass over the pairs
-  struct Beyond {
-    std::uint32_t a, b, src;
-  };
-  std::vector<Beyond> beyond;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (dest[k] == kRemoved) dropped.push_back(old.tally[k]);
-    if (dest[k] == kBeyond) {
-      const std::uint32_t a = inv[old.i[k]], b = inv[old.j[k]];
-      beyond.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(k)});
-    }
-  }
-  std::sort(beyond.begin(), beyond.end(),
-            [](const Beyond& u, const Beyond& v) { return u.a != v.a ? u.a < v.a : u.b < v.b; });
-  for (const Beyond& it : beyond) dropped.push_back(old.tally[it.src]);
 }
 
 }  // namespace lbdem::dem

@@ -11,21 +11,24 @@
 
 namespace lbdem::dem {
 
-/// Accounting of the contact a pair is in now, the fields every step of a touch updates: energies
-/// dissipated since it began [J] and the powers of the last step [W] (trapezoidal integration).
-/// Eight doubles on one cache line; the impact record lives apart (ContactRecord), so the pair pass
-/// moves 64 B of tally per contact instead of 104 (+0.7 % on the bench bed, measured on a Xeon;
-/// results/bench/tally_split_20261204.txt).
-struct alignas(64) ContactTally {
-  double e_normal_damping = 0, e_tangential_damping = 0;
-  double p_normal_damping = 0, p_tangential_damping = 0;
-  double e_sliding = 0, e_rolling = 0;
-  double e_stiffness = 0;  // spring energy entered by stiffness change (see contact_law.hpp) [J]
-  double u_elastic = 0;    // energy stored in the contact now [J]
+/// What one contact keeps of its energy: what it has dissipated since it began [J] (damping by
+/// the trapezoidal rule over its powers, plus sliding and rolling losses: the per-collision grid
+/// and rows report it), its damping power at the last evaluation [W] (that rule's last term) and
+/// the energy stored in it now [J]. The budget by mechanism is not kept per contact: the passes
+/// sum each step's powers and losses per block of rows (EnergyRates), and DemSolver integrates
+/// the totals (24 B per contact instead of the 64 of eight accounts).
+struct ContactTally {
+  double e_dissipated = 0;  // [J]
+  double p_damping = 0;     // normal + tangential dashpot power at the last evaluation [W]
+  double u_elastic = 0;     // springs + cohesion [J]
+};
 
-  double dissipated() const {
-    return e_normal_damping + e_tangential_damping + e_sliding + e_rolling;
-  }
+/// One step's energy rates summed over a block of contacts, by mechanism: the dashpots' powers at
+/// this time level [W] and the energy the step moved by sliding, rolling and stiffness change [J].
+struct EnergyRates {
+  double p_normal_damping = 0, p_tangential_damping = 0;
+  double e_sliding = 0, e_rolling = 0, e_stiffness = 0;
+  static constexpr std::size_t kWidth = 5;
 };
 
 /// Impact record of the contact a pair is in now, for the statistics and the opt-in rows: written
@@ -109,9 +112,7 @@ void build_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, const
                  const CellList& cells, double extra, PairList& out);
 
 /// Moves the state of pairs in contact from `old` into `fresh`. `inv` maps an old particle index to
-/// its new index (UINT32_MAX if removed). Pairs whose contact cannot be carried (a partner removed)
-/// hand their tally to `dropped`.
-void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh,
-                std::vector<ContactTally>& dropped);
+/// its new index (UINT32_MAX if removed); a contact whose partner was removed ends.
+void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, PairList& fresh);
 
 }  // namespace lbdem::dem

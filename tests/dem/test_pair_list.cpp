@@ -75,7 +75,7 @@ TEST_CASE("Pair list: the cell search finds the brute-force pairs, and reused st
 
     // Dirty the reused list as a step would, then rebuild into it: every field as fresh.
     for (auto& h : reused.history) h.kt = 1;
-    for (auto& t : reused.tally) t.e_sliding = 1;
+    for (auto& t : reused.tally) t.e_dissipated = 1;
     for (auto& c : reused.record) c.max_force = 1;
     for (auto& s : reused.state) s = kTouching;
     for (auto& f : reused.j_force) f = Vec3::Ones();
