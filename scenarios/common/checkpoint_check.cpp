@@ -191,6 +191,15 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
     name = kPreviousCheckpoint;
   }
   const H5In f(p.checkpoint);
+  // The DEM state's layout: a checkpoint of an lbdem whose contact records had another shape is
+  // refused here, before anything is written.
+  if (const std::int64_t layout = f.attr_int("layout_version", "/dem");
+      layout != dem::DemSolver::kCheckpointLayout)
+    throw refuse(name + " holds the DEM state in layout " + std::to_string(layout) +
+                     ", this lbdem reads layout " +
+                     std::to_string(dem::DemSolver::kCheckpointLayout) +
+                     " (it was written by another lbdem build)",
+                 "finish the run with the lbdem that began it, or " + fresh);
   p.time_s = f.attr_double("time_s", "/dem");
   // Its origin: scenario, physics, lattice.
   if (!f.has_attr("config_hash", kRunGroup)) {

@@ -12,6 +12,7 @@
 
 #include <hdf5.h>
 
+#include "dem/dem_solver.hpp"
 #include "helpers/checkpoint_edit.hpp"
 #include "helpers/cli.hpp"
 
@@ -132,6 +133,29 @@ TEST_CASE("a config edited to other physics is refused naming the key", "[scenar
   check_refused(out,
                 "checkpoint.h5 was written under other physics: materials[0].restitution = "
                 "0.5 there, 0.7 in config.toml; fix: put the values back");
+  fs::remove_all(out);
+}
+
+TEST_CASE("a checkpoint of another DEM layout is refused naming both layouts",
+          "[scenarios][checkpoint]") {
+  // As an lbdem whose contact records had another shape wrote it: only the recorded layout
+  // differs here, so the refusal comes from the check, before any dataset is read.
+  const std::string out = finished_run("other_layout");
+  const hid_t f = H5Fopen((out + "/checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  CHECK(H5Adelete_by_name(f, "/dem", "layout_version", H5P_DEFAULT) >= 0);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate_by_name(f, "/dem", "layout_version", H5T_STD_I64LE, space, H5P_DEFAULT,
+                                    H5P_DEFAULT, H5P_DEFAULT);
+  REQUIRE(a >= 0);
+  const std::int64_t old_layout = lbdem::dem::DemSolver::kCheckpointLayout - 1;
+  CHECK(H5Awrite(a, H5T_NATIVE_INT64, &old_layout) >= 0);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Fclose(f);
+  check_refused(out, "checkpoint.h5 holds the DEM state in layout " + std::to_string(old_layout) +
+                         ", this lbdem reads layout " +
+                         std::to_string(lbdem::dem::DemSolver::kCheckpointLayout));
   fs::remove_all(out);
 }
 
