@@ -12,6 +12,8 @@ namespace {
 // All are plain doubles without implicit padding, so a checkpoint holds no indeterminate bytes.
 constexpr std::size_t kTallyWidth = 3, kRow = 8;  // a checkpoint row: the tally, then the record
 static_assert(sizeof(ContactHistory) == 8 * sizeof(double) &&
+              sizeof(SpringHistory) == 4 * sizeof(double) &&
+              sizeof(RollingHistory) == 4 * sizeof(double) &&
               sizeof(ContactTally) == kTallyWidth * sizeof(double) &&
               sizeof(ContactTally) + sizeof(ContactRecord) == kRow * sizeof(double));
 
@@ -84,6 +86,7 @@ void DemSolver::save(H5Out& f) const {
   f.write("/dem/pairs_i", cast<std::uint32_t, std::int64_t>(pairs_.i));
   f.write("/dem/pairs_j", cast<std::uint32_t, std::int64_t>(pairs_.j));
   f.write("/dem/pairs_history", flatten(pairs_.history));
+  f.write("/dem/pairs_rolling", flatten(pairs_.rolling));
   f.write("/dem/pairs_tally", flatten(pairs_.tally, pairs_.record));
   f.write("/dem/pairs_state", pairs_.state);
   f.write("/dem/pairs_first", cast<std::uint32_t, std::int64_t>(pairs_.first));
@@ -160,11 +163,12 @@ void DemSolver::load(const H5In& f) {
   pairs_.resize(pi.size());
   pairs_.i = cast<std::int64_t, std::uint32_t>(pi);
   pairs_.j = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_j"));
-  pairs_.history = unflatten<ContactHistory>(f.doubles("/dem/pairs_history"));
+  pairs_.history = unflatten<SpringHistory>(f.doubles("/dem/pairs_history"));
+  pairs_.rolling = unflatten<RollingHistory>(f.doubles("/dem/pairs_rolling"));
   unflatten(f.doubles("/dem/pairs_tally"), pairs_.tally, pairs_.record);
   pairs_.state = f.uint8s("/dem/pairs_state");
-  if (pairs_.history.size() != pi.size() || pairs_.tally.size() != pi.size() ||
-      pairs_.state.size() != pi.size())
+  if (pairs_.history.size() != pi.size() || pairs_.rolling.size() != pi.size() ||
+      pairs_.tally.size() != pi.size() || pairs_.state.size() != pi.size())
     throw std::runtime_error("checkpoint is inconsistent: pair arrays differ in length");
   pairs_.first = cast<std::int64_t, std::uint32_t>(f.int64s("/dem/pairs_first"));
   check_loaded();

@@ -90,8 +90,8 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
     // torque sums would only add zeros. Skips the eight velocity loads and the kinematics
     // (book() reads v_rel only at the start of a touch).
     g.v_rel = Vec3::Zero();
-    const ContactForce c =
-        Law::evaluate_apart(tab.particle(p.material[i], p.material[j]), g, pl.history[k]);
+    const ContactForce c = Law::evaluate_apart(tab.particle(p.material[i], p.material[j]), g,
+                                               HistoryRef{pl.history[k], pl.rolling[k]});
     pl.j_force[slot] = -c.force;
     pl.j_torque[slot] = Vec3::Zero();
     book<Law::Rolling::active>(pl.tally[k], pl.record[k], pl.state[k], c, g, time, dt,
@@ -114,8 +114,8 @@ LBDEM_FLATTEN inline void pair_kernel(const Table& tab, const ParticleArrays& p,
   g.w_rel = wi - wj;
   g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
   g.w_half = p.omega[i] - p.omega[j];
-  const ContactForce c =
-      Law::evaluate(tab.particle(p.material[i], p.material[j]), g, pl.history[k], dt);
+  const ContactForce c = Law::evaluate(tab.particle(p.material[i], p.material[j]), g,
+                                       HistoryRef{pl.history[k], pl.rolling[k]}, dt);
   const Vec3 tc = g.n.cross(c.ft);
   pl.j_force[slot] = -c.force;
   pl.j_torque[slot] = aj * tc - c.m_roll;
@@ -199,7 +199,8 @@ void wall_contact(const Params& prm, const ParticleArrays& p, std::size_t k, con
   g.w_rel = wk;
   g.v_half = vh + a * wh.cross(n) - wall_velocity;
   g.w_half = wh;
-  const ContactForce c = Law::evaluate(prm, g, wc.history[e], dt);
+  const ContactForce c =
+      Law::evaluate(prm, g, HistoryRef{wc.history[e].spring, wc.history[e].rolling}, dt);
   const Vec3 point = p.x[k] + a * n;
   f += c.force;
   tq += a * n.cross(c.ft) + c.m_roll;

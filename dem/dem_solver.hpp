@@ -129,7 +129,7 @@ class DemSolver {
 
   /// Version of the checkpoint layout; load() refuses any other (bump when the saved structs
   /// change).
-  static constexpr int kCheckpointLayout = 4;
+  static constexpr int kCheckpointLayout = 5;
   void save(H5Out& out) const;
   void load(const H5In& in);
 

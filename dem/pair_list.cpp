@@ -9,15 +9,17 @@ namespace lbdem::dem {
 void PairList::resize(std::size_t n) {
   i.resize(n), j.resize(n);
   history.resize(n);
+  rolling.resize(n);
   tally.resize(n);
   record.resize(n);
   state.resize(n);
   // Reused storage (the rebuild swaps two lists) holds an older list's values: every pair is
-  // cleared, on all threads (169 B per pair, a memory-bound pass that a rebuild every few steps
+  // cleared, on all threads (129 B per pair, a memory-bound pass that a rebuild every few steps
   // repeats). i and j are left as they are: build_pairs and the checkpoint overwrite them.
 #pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
-    history[k] = ContactHistory{};
+    history[k] = SpringHistory{};
+    rolling[k] = RollingHistory{};
     tally[k] = ContactTally{};
     record[k] = ContactRecord{};
     state[k] = 0;
@@ -310,9 +312,11 @@ void carry_over(const PairList& old, const std::vector<std::uint32_t>& inv, Pair
     const auto pos = std::lower_bound(beg, end, b);
     if (pos == end || *pos != b) continue;
     const auto f = static_cast<std::size_t>(pos - fresh.j.begin());
-    ContactHistory h = old.history[k];
-    if (flip) h.xi = -h.xi, h.theta = -h.theta;
+    SpringHistory h = old.history[k];
+    RollingHistory hr = old.rolling[k];
+    if (flip) h.xi = -h.xi, hr.theta = -hr.theta;
     fresh.history[f] = h;
+    fresh.rolling[f] = hr;
     fresh.tally[f] = old.tally[k];
     fresh.record[f] = old.record[k];
     fresh.state[f] = old.state[k];

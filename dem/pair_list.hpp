@@ -48,7 +48,8 @@ enum PairState : std::uint8_t { kInteracting = 1, kTouching = 2, kStarted = 4, k
 
 struct PairList {
   std::vector<std::uint32_t> i, j;
-  std::vector<ContactHistory> history;
+  std::vector<SpringHistory> history;
+  std::vector<RollingHistory> rolling;  // read and written only by laws with a rolling model
   std::vector<ContactTally> tally;
   std::vector<ContactRecord> record;
   std::vector<std::uint8_t> state;   // PairState bits of the last evaluation

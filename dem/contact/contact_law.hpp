@@ -48,11 +48,15 @@ struct ContactLaw {
   /// g.n, g.delta and g.r_star, so a caller may leave the kinematics unset (about half the listed
   /// pairs of a cohesive bed are in this state, measured on the Bo 10 original: 149,500 of 303,221
   /// interacting pairs).
-  static ContactForce evaluate_apart(const Params& p, const ContactGeometry& g, ContactHistory& h) {
+  static ContactForce evaluate_apart(const Params& p, const ContactGeometry& g, HistoryRef h) {
     ContactForce out;
     const double f_coh = cohesion(p, g, out);
-    out.e_stiffness = -0.5 * h.kt * h.xi.squaredNorm() - 0.5 * h.kr * h.theta.squaredNorm();
-    h = ContactHistory{};
+    out.e_stiffness = -0.5 * h.spring.kt * h.spring.xi.squaredNorm();
+    h.spring = SpringHistory{};
+    if constexpr (Rolling::active) {
+      out.e_stiffness -= 0.5 * h.rolling.kr * h.rolling.theta.squaredNorm();
+      h.rolling = RollingHistory{};
+    }
     out.force = f_coh * g.n;
     return out;
   }
@@ -72,9 +76,10 @@ struct ContactLaw {
   /// at second order. When k_t changes with the overlap (Mindlin), 0.5 (k_t,new - k_t,old) |xi|^2
   /// enters the spring without work: it is booked as e_stiffness so that the energy budget closes
   /// (1/2 (k_{n+1} - k_n) xi_n . xi_{n+1}); at separation the spring's energy leaves the same way.
-  static ContactForce evaluate(const Params& p, const ContactGeometry& g, ContactHistory& h,
+  static ContactForce evaluate(const Params& p, const ContactGeometry& g, HistoryRef hr,
                                double dt) {
-    if (g.delta <= 0) return evaluate_apart(p, g, h);
+    if (g.delta <= 0) return evaluate_apart(p, g, hr);
+    SpringHistory& h = hr.spring;
     ContactForce out;
     const double f_coh = cohesion(p, g, out);
     const auto s = Normal::elastic(p.normal, g.delta, g.r_star);
@@ -124,7 +129,7 @@ struct ContactLaw {
     if constexpr (Rolling::active) {
       const Vec3 wr = g.w_rel - g.w_rel.dot(g.n) * g.n;
       const Vec3 wh = g.w_half - g.w_half.dot(g.n) * g.n;
-      Rolling::apply(p.rolling, g, wr, wh, fn, s.k_n, dt, h, out);
+      Rolling::apply(p.rolling, g, wr, wh, fn, s.k_n, dt, hr.rolling, out);
     }
     out.force = (f_coh - fn) * g.n + ft;
     return out;

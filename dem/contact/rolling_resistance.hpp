@@ -31,7 +31,7 @@ struct ConstantTorqueRolling {
 
   static void apply(const Params& p, const ContactGeometry& g, const Vec3& omega_r,
                     const Vec3& /*half*/, double fn, double /*k_n*/, double dt,
-                    ContactHistory& /*h*/, ContactForce& out) {
+                    RollingHistory& /*h*/, ContactForce& out) {
     const double w = omega_r.norm();
     if (w <= 0 || fn <= 0) return;
     const double m = std::min(p.mu_r * p.arm_factor * g.r_star * fn, g.i_star * w / dt);
@@ -53,7 +53,7 @@ struct EpsdRolling {
   static constexpr bool active = true;
 
   static void apply(const Params& p, const ContactGeometry& g, const Vec3& /*omega_r*/,
-                    const Vec3& omega_half, double fn, double k_n, double dt, ContactHistory& h,
+                    const Vec3& omega_half, double fn, double k_n, double dt, RollingHistory& h,
                     ContactForce& out) {
     const double arm = p.arm_factor * g.r_star;
     const double kr = 2.25 * k_n * p.mu_r * p.mu_r * arm * arm;

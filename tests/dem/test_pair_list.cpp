@@ -75,6 +75,7 @@ TEST_CASE("Pair list: the cell search finds the brute-force pairs, and reused st
 
     // Dirty the reused list as a step would, then rebuild into it: every field as fresh.
     for (auto& h : reused.history) h.kt = 1;
+    for (auto& h : reused.rolling) h.kr = 1;
     for (auto& t : reused.tally) t.e_dissipated = 1;
     for (auto& c : reused.record) c.max_force = 1;
     for (auto& s : reused.state) s = kTouching;
@@ -84,6 +85,7 @@ TEST_CASE("Pair list: the cell search finds the brute-force pairs, and reused st
     CHECK(same_bytes(reused.j, fresh.j));
     CHECK(same_bytes(reused.first, fresh.first));
     CHECK(same_bytes(reused.history, fresh.history));
+    CHECK(same_bytes(reused.rolling, fresh.rolling));
     CHECK(same_bytes(reused.tally, fresh.tally));
     CHECK(same_bytes(reused.record, fresh.record));
     CHECK(same_bytes(reused.state, fresh.state));
