@@ -3,10 +3,12 @@
 // combination, chosen once per step by std::visit). Private to dem_solver.cpp.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "core/thread_ranges.hpp"
 #include "dem/dem_solver.hpp"
+#include "dem/pair_lanes.hpp"
 
 namespace lbdem::dem {
 
@@ -132,6 +134,78 @@ inline std::size_t energy_blocks(std::size_t n) {
   return (n + kEnergyBlock - 1) / kEnergyBlock;
 }
 
+/// The pair pass of a law with a lane form (pair_lanes.hpp) over the rows of blocks [b0, b1): the
+/// distance loop sends each touching pair to the lanes (others, a contact that ends this step,
+/// take the scalar kernel), the lanes evaluate the law, and a last loop over the touching pairs,
+/// in pair order, books them and adds their forces: to the rows' sums, after the scalar ones, and
+/// to the j side.
+template <class Table>
+void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted& pr,
+                     const DemSettings& s, PairList& pl, double time, RowSums& sums,
+                     EnergyRates* rates, std::size_t b0, std::size_t b1) {
+  const double range = tab.range, dt = s.dt;
+  const Domain& dom = s.domain;
+  const bool per = dom.any_periodic(), rows = s.collisions.rows;
+  const std::size_t n = p.size();
+  thread_local LaneBuffer buf;
+  for (std::size_t b = b0; b < b1; ++b) {
+    EnergyRates block;
+    buf.clear();
+    for (std::size_t i = b * kEnergyBlock; i < std::min(n, (b + 1) * kEnergyBlock); ++i) {
+      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+      for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
+        const std::uint32_t j = pl.j[k];
+        Vec3 d = p.x[j] - p.x[i];
+        if (per) d = dom.min_image(d);
+        const double r2 = d.squaredNorm();
+        const double rs = p.radius[i] + p.radius[j], reach = rs + range;
+        if (r2 >= reach * reach && !pl.state[k]) continue;
+        const double dist = std::sqrt(r2);
+        if (rs - dist > 0)
+          buf.push(k, i, j, d, dist);
+        else
+          pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t, block);
+      }
+      sums.f[i] = f;
+      sums.t[i] = t;
+    }
+    if (!buf.k.empty())
+      hertz_mindlin_lanes(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
+    for (std::size_t q = 0; q < buf.k.size(); ++q) {
+      const std::size_t k = std::size_t(buf.k[q]), i = std::size_t(buf.i[q]);
+      const Vec3 force(buf.fx[q], buf.fy[q], buf.fz[q]), tc(buf.cx[q], buf.cy[q], buf.cz[q]);
+      const std::uint32_t slot = pl.jslot[k];
+      pl.j_force[slot] = -force;
+      pl.j_torque[slot] = buf.aj[q] * tc;
+      sums.f[i] += force;
+      sums.t[i] += buf.ai[q] * tc;
+      // book() for a touching contact, from the lanes' values.
+      ContactTally& tl = pl.tally[k];
+      ContactRecord& rc = pl.record[k];
+      std::uint8_t st = kTouching | kInteracting;
+      if (!(pl.state[k] & kTouching)) {
+        tl.e_dissipated = tl.p_damping = 0;
+        rc = ContactRecord{.t_start = time, .vn_impact = buf.vn[q], .vt_impact = buf.vt[q]};
+        st |= kStarted;
+      }
+      const double pw = buf.p_nd[q] + buf.p_td[q];
+      tl.e_dissipated += 0.5 * dt * (tl.p_damping + pw) + buf.e_sl[q];
+      tl.p_damping = pw;
+      tl.u_elastic = buf.u_el[q];
+      block.p_normal_damping += buf.p_nd[q];
+      block.p_tangential_damping += buf.p_td[q];
+      block.e_sliding += buf.e_sl[q];
+      block.e_stiffness += buf.e_st[q];
+      if (rows) {
+        rc.max_overlap = std::max(rc.max_overlap, buf.delta[q]);
+        rc.max_force = std::max(rc.max_force, buf.fn[q]);
+      }
+      pl.state[k] = st;
+    }
+    rates[b] = block;
+  }
+}
+
 /// The pair pass over the rows of blocks [b0, b1), in a function of its own
 /// (core/thread_ranges.hpp: why; pr by value for the same reason: the caller's copy sits on the
 /// master thread's stack).
@@ -139,6 +213,11 @@ template <class Table>
 [[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted pr,
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  EnergyRates* rates, std::size_t b0, std::size_t b1) {
+  using Law = typename Table::law_type;
+  if constexpr (std::is_same_v<Law, ContactLaw<HertzMindlin, NoRolling, NoCohesion>>) {
+    if (tab.n_materials == 1)  // one parameter set: the lanes take it as constants
+      return pair_rows_lanes(tab, p, pr, s, pl, time, sums, rates, b0, b1);
+  }
   const double range = tab.range;
   const Domain& dom = s.domain;
   const bool per = dom.any_periodic();

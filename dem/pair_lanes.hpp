@@ -1,0 +1,169 @@
+#pragma once
+// The Hertz-Mindlin law without rolling or cohesion evaluated over a block's touching pairs in SIMD
+// lanes (issue: a lean DEM data path). The scalar law (contact_law.hpp) is bound by its dependency
+// chain, three roots and two divisions in series per contact; here each lane takes one contact,
+// branch-free: both sides of the sliding test are computed and selected. The arithmetic is the
+// scalar law's, term by term (contact_law.hpp gives the physics and the energy bookkeeping), so
+// the results agree to round-off (tested against it in tests/dem/test_pair_lanes.cpp). Private to
+// dem_passes.hpp.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "dem/contact/contact_law.hpp"
+#include "dem/particles.hpp"
+
+namespace lbdem::dem {
+
+/// The touching pairs of a block, gathered by the distance loop, and what the lanes return.
+struct LaneBuffer {
+  std::vector<std::int32_t> k, i, j;  // pair index, its row (particle i), its partner j
+  std::vector<double> dx, dy, dz;     // x_j - x_i (minimum image)
+  std::vector<double> dist;           // |x_j - x_i| as the distance test took it
+  // Results: force on i, n x F_t (the torque per lever arm), the lever arms, the law's energies,
+  // the normal force, the normal and tangential relative speeds (impact record) and the overlap.
+  std::vector<double> fx, fy, fz, cx, cy, cz, ai, aj;
+  std::vector<double> p_nd, p_td, e_sl, e_st, u_el, fn, vn, vt, delta;
+
+  void clear() {
+    k.clear(), i.clear(), j.clear(), dx.clear(), dy.clear(), dz.clear(), dist.clear();
+  }
+  void push(std::size_t pair, std::size_t row, std::uint32_t partner, const Vec3& d, double r) {
+    k.push_back(std::int32_t(pair)), i.push_back(std::int32_t(row)),
+        j.push_back(std::int32_t(partner));
+    dx.push_back(d.x()), dy.push_back(d.y()), dz.push_back(d.z()), dist.push_back(r);
+  }
+  void size_results() {
+    const std::size_t n = k.size();
+    for (auto* v : {&fx, &fy, &fz, &cx, &cy, &cz, &ai, &aj, &p_nd, &p_td, &e_sl, &e_st, &u_el, &fn,
+                    &vn, &vt, &delta})
+      v->resize(n);
+  }
+};
+
+/// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
+/// pair, updating the tangential springs in `history` and writing the results into `b`.
+inline void hertz_mindlin_lanes(
+    const typename ContactLaw<HertzMindlin, NoRolling, NoCohesion>::Params& prm,
+    const ParticleArrays& p, const std::vector<Vec3>& v_pred, const std::vector<Vec3>& w_pred,
+    SpringHistory* history, double dt, LaneBuffer& b) {
+  b.size_results();
+  const double E = prm.normal.e_star, G = prm.normal.g_star, cd = prm.normal.c_damp;
+  const double tr = prm.tangential_damping ? prm.normal.t_ratio : 0.0, mu = prm.friction;
+  const double* R = p.radius.data();
+  const double* M = p.mass.data();
+  const double* V = p.v.data()->data();
+  const double* W = p.omega.data()->data();
+  const double* VP = v_pred.data()->data();
+  const double* WP = w_pred.data()->data();
+  const std::int32_t* K = b.k.data();
+  const std::int32_t* I = b.i.data();
+  const std::int32_t* J = b.j.data();
+  double* __restrict H = reinterpret_cast<double*>(history);  // xi (3) and kt per contact
+  const double* DX = b.dx.data();
+  const double* DY = b.dy.data();
+  const double* DZ = b.dz.data();
+  const double* DS = b.dist.data();
+  double* __restrict FX = b.fx.data();
+  double* __restrict FY = b.fy.data();
+  double* __restrict FZ = b.fz.data();
+  double* __restrict CX = b.cx.data();
+  double* __restrict CY = b.cy.data();
+  double* __restrict CZ = b.cz.data();
+  double* __restrict AI = b.ai.data();
+  double* __restrict AJ = b.aj.data();
+  double* __restrict PND = b.p_nd.data();
+  double* __restrict PTD = b.p_td.data();
+  double* __restrict ESL = b.e_sl.data();
+  double* __restrict EST = b.e_st.data();
+  double* __restrict UEL = b.u_el.data();
+  double* __restrict FN = b.fn.data();
+  double* __restrict VN = b.vn.data();
+  double* __restrict VT = b.vt.data();
+  double* __restrict DL = b.delta.data();
+  const std::size_t n = b.k.size();
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    // int indices: GCC 12 gathers with 32-bit offsets (a 64-bit index left the loop scalar).
+    const int i = I[q], j = J[q], hk = 4 * K[q];
+    const int a3 = 3 * i, b3 = 3 * j;
+    const double dx = DX[q], dy = DY[q], dz = DZ[q], dist = DS[q];
+    const double ri = R[i], rj = R[j], rs = ri + rj;
+    const double nx = dx / dist, ny = dy / dist, nz = dz / dist;
+    const double delta = rs - dist;
+    const double r_star = ri * rj / rs, m_star = M[i] * M[j] / (M[i] + M[j]);
+    const double half = 0.5 * delta, ai = ri - half, aj = rj - half;
+    // v_rel = vp_i - vp_j + (ai wp_i + aj wp_j) x n; v_half likewise from v and omega.
+    const double ex = ai * WP[a3] + aj * WP[b3], ey = ai * WP[a3 + 1] + aj * WP[b3 + 1],
+                 ez = ai * WP[a3 + 2] + aj * WP[b3 + 2];
+    const double vx = VP[a3] - VP[b3] + (ey * nz - ez * ny),
+                 vy = VP[a3 + 1] - VP[b3 + 1] + (ez * nx - ex * nz),
+                 vz = VP[a3 + 2] - VP[b3 + 2] + (ex * ny - ey * nx);
+    const double hx_ = ai * W[a3] + aj * W[b3], hy_ = ai * W[a3 + 1] + aj * W[b3 + 1],
+                 hz_ = ai * W[a3 + 2] + aj * W[b3 + 2];
+    const double ux = V[a3] - V[b3] + (hy_ * nz - hz_ * ny),
+                 uy = V[a3 + 1] - V[b3 + 1] + (hz_ * nx - hx_ * nz),
+                 uz = V[a3 + 2] - V[b3 + 2] + (hx_ * ny - hy_ * nx);
+    // Hertz normal force with Tsuji damping; Mindlin's k_t.
+    const double a = std::sqrt(r_star * delta);
+    const double kn = 4.0 / 3.0 * E * a, f_el = kn * delta, kt = 8.0 * G * a;
+    const double vn = vx * nx + vy * ny + vz * nz;
+    const double gam = cd * std::sqrt(m_star * kn);
+    const double fnv = f_el + gam * vn;
+    const double vtx = vx - vn * nx, vty = vy - vn * ny, vtz = vz - vn * nz;
+    // The spring turned into the tangent plane, its length kept.
+    double x0 = H[hk], x1 = H[hk + 1], x2 = H[hk + 2];
+    const double kt_old = H[hk + 3];
+    const double xx = x0 * x0 + x1 * x1 + x2 * x2;
+    const double xn = x0 * nx + x1 * ny + x2 * nz;
+    const double t0 = x0 - xn * nx, t1 = x1 - xn * ny, t2 = x2 - xn * nz;
+    const double tt = t0 * t0 + t1 * t1 + t2 * t2;
+    const double sq = std::sqrt(xx / (tt > 0 ? tt : 1.0));  // unconditional: no branch in lanes
+    const double sc = tt > 0 ? sq : 0.0;
+    x0 = xx > 0 ? t0 * sc : x0;
+    x1 = xx > 0 ? t1 * sc : x1;
+    x2 = xx > 0 ? t2 * sc : x2;
+    const double s0 = x0, s1 = x1, s2 = x2;
+    // Grown by the relative displacement of the step (mid-step velocity).
+    const double un = ux * nx + uy * ny + uz * nz;
+    x0 += (ux - un * nx) * dt;
+    x1 += (uy - un * ny) * dt;
+    x2 += (uz - un * nz) * dt;
+    const double gt = gam * tr;
+    const double cap = mu * (fnv > 0 ? fnv : 0.0);
+    const double f0 = -kt * x0, f1 = -kt * x1, f2 = -kt * x2;
+    const double ff = f0 * f0 + f1 * f1 + f2 * f2;
+    const bool slide = ff > cap * cap;
+    // Sliding: the spring cut back to the cap, no dashpot.
+    const double r_cut = cap / std::sqrt(slide ? ff : 1.0);
+    const double g0 = f0 * r_cut, g1 = f1 * r_cut, g2 = f2 * r_cut;
+    const double y0 = -g0 / kt, y1 = -g1 / kt, y2 = -g2 / kt;
+    const double esl =
+        0.5 * ((kt_old * s0 + kt * y0) * (x0 - y0) + (kt_old * s1 + kt * y1) * (x1 - y1) +
+               (kt_old * s2 + kt * y2) * (x2 - y2));
+    // Sticking: spring + dashpot, the dashpot limited so that |F_t| <= cap.
+    double d0 = f0 - gt * vtx, d1 = f1 - gt * vty, d2 = f2 - gt * vtz;
+    const double dd = d0 * d0 + d1 * d1 + d2 * d2;
+    const double root = std::sqrt(dd > 0 ? dd : 1.0);
+    const double lim = dd > cap * cap ? cap / root : 1.0;
+    d0 *= lim, d1 *= lim, d2 *= lim;
+    const double ptd = -((d0 - f0) * vtx + (d1 - f1) * vty + (d2 - f2) * vtz);
+    const double ft0 = slide ? g0 : d0, ft1 = slide ? g1 : d1, ft2 = slide ? g2 : d2;
+    x0 = slide ? y0 : x0, x1 = slide ? y1 : x1, x2 = slide ? y2 : x2;
+    H[hk] = x0, H[hk + 1] = x1, H[hk + 2] = x2, H[hk + 3] = kt;
+    FX[q] = -fnv * nx + ft0, FY[q] = -fnv * ny + ft1, FZ[q] = -fnv * nz + ft2;
+    CX[q] = ny * ft2 - nz * ft1, CY[q] = nz * ft0 - nx * ft2, CZ[q] = nx * ft1 - ny * ft0;
+    AI[q] = ai, AJ[q] = aj;
+    PND[q] = gam * vn * vn;
+    PTD[q] = slide ? 0.0 : ptd;
+    ESL[q] = slide ? esl : 0.0;
+    EST[q] = 0.5 * (kt - kt_old) * (s0 * x0 + s1 * x1 + s2 * x2);
+    UEL[q] = 0.4 * f_el * delta + 0.5 * kt * (x0 * x0 + x1 * x1 + x2 * x2);
+    FN[q] = fnv;
+    VN[q] = vn;
+    VT[q] = std::sqrt(vtx * vtx + vty * vty + vtz * vtz);
+    DL[q] = delta;
+  }
+}
+
+}  // namespace lbdem::dem

@@ -1,0 +1,101 @@
+// The lane form of the Hertz-Mindlin law (dem/pair_lanes.hpp) against the scalar law it must equal
+// (ContactLaw<HertzMindlin, NoRolling, NoCohesion>::evaluate): random touching pairs with random
+// velocities, spins and springs, a third of them sliding, every output and the updated spring.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "dem/contact/contact_law.hpp"
+#include "dem/material.hpp"
+#include "dem/pair_lanes.hpp"
+#include "dem/particles.hpp"
+
+using namespace lbdem;
+using namespace lbdem::dem;
+using Law = ContactLaw<HertzMindlin, NoRolling, NoCohesion>;
+
+TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and sliding", "[dem]") {
+  MaterialPair mp{};
+  mp.e_star = 5e6 / (2 * (1 - 0.09));
+  mp.g_star = mp.e_star * 0.4;
+  mp.restitution = 0.5;
+  mp.friction = 0.3;
+  const Law::Params prm{HertzMindlin::from(mp, 0.0), mp.friction, true, {}, {}};
+  const double dt = 1e-6;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1), pos(0.5, 1.5);
+  ParticleArrays p;
+  std::vector<Vec3> vp, wp;
+  const int n = 400;  // particles 2k and 2k+1 touch
+  for (int k = 0; k < n; ++k) {
+    const double r = 5e-4 * pos(rng);
+    const Vec3 x = k % 2 ? Vec3::Zero() : Vec3(0.01 * k, 0, 0);
+    p.add(x, Vec3(u(rng), u(rng), u(rng)) * 0.1, Vec3(u(rng), u(rng), u(rng)) * 50, r, 2500, 0, k);
+    vp.push_back(p.v.back() + Vec3(u(rng), u(rng), u(rng)) * 1e-3);
+    wp.push_back(p.omega.back() + Vec3(u(rng), u(rng), u(rng)));
+  }
+  std::vector<SpringHistory> lanes(n / 2), scalar(n / 2);
+  LaneBuffer buf;
+  std::vector<Vec3> d(n / 2);
+  for (int c = 0; c < n / 2; ++c) {
+    const int i = 2 * c, j = 2 * c + 1;
+    Vec3 dir(u(rng), u(rng), u(rng));
+    dir.normalize();
+    const double overlap = 1e-3 * (p.radius[i] + p.radius[j]) * pos(rng);
+    p.x[j] = p.x[i] + (p.radius[i] + p.radius[j] - overlap) * dir;
+    d[c] = p.x[j] - p.x[i];
+    // A spring partly out of the tangent plane; every third one long enough to slide.
+    const double len = (c % 3 == 0 ? 1e-4 : 1e-8) * pos(rng);
+    lanes[c].xi = Vec3(u(rng), u(rng), u(rng)).normalized() * len;
+    lanes[c].kt = 8 * mp.g_star * std::sqrt(2.5e-4 * overlap) * pos(rng);
+    scalar[c] = lanes[c];
+    buf.push(std::size_t(c), std::size_t(i), std::uint32_t(j), d[c], d[c].norm());
+  }
+  hertz_mindlin_lanes(prm, p, vp, wp, lanes.data(), dt, buf);
+  int sliding = 0;
+  for (int c = 0; c < n / 2; ++c) {
+    CAPTURE(c);
+    const int i = 2 * c, j = 2 * c + 1;
+    const double ri = p.radius[i], rj = p.radius[j], rs = ri + rj, dist = d[c].norm();
+    ContactGeometry g;
+    g.n = d[c] / dist;
+    g.delta = rs - dist;
+    g.r_star = ri * rj / rs;
+    g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+    g.i_star = 0;
+    const double ai = ri - 0.5 * g.delta, aj = rj - 0.5 * g.delta;
+    g.v_rel = vp[i] - vp[j] + (ai * wp[i] + aj * wp[j]).cross(g.n);
+    g.w_rel = wp[i] - wp[j];
+    g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
+    g.w_half = p.omega[i] - p.omega[j];
+    RollingHistory none;
+    const ContactForce s = Law::evaluate(prm, g, HistoryRef{scalar[c], none}, dt);
+    sliding += s.e_sliding > 0;
+    // Round-off only: the two evaluate the same terms in other groupings (1e-12 of each
+    // quantity's own scale).
+    const double fs = s.force.norm();
+    CHECK((Vec3(buf.fx[c], buf.fy[c], buf.fz[c]) - s.force).norm() <= 1e-12 * fs);
+    CHECK((Vec3(buf.cx[c], buf.cy[c], buf.cz[c]) - g.n.cross(s.ft)).norm() <= 1e-12 * fs);
+    CHECK(buf.ai[c] == Approx(ai).epsilon(1e-14));
+    CHECK(buf.aj[c] == Approx(aj).epsilon(1e-14));
+    CHECK((lanes[c].xi - scalar[c].xi).norm() <= 1e-12 * scalar[c].xi.norm());
+    CHECK(lanes[c].kt == Approx(scalar[c].kt).epsilon(1e-13));
+    CHECK(buf.fn[c] == Approx(s.fn).epsilon(1e-12));
+    const double e = std::abs(s.u_elastic) + std::abs(s.e_sliding) + std::abs(s.e_stiffness) +
+                     dt * (s.p_normal_damping + std::abs(s.p_tangential_damping));
+    CHECK(std::abs(buf.u_el[c] - s.u_elastic) <= 1e-12 * e);
+    CHECK(std::abs(buf.e_sl[c] - s.e_sliding) <= 1e-12 * e);
+    CHECK(std::abs(buf.e_st[c] - s.e_stiffness) <= 1e-12 * e);
+    CHECK(std::abs(buf.p_nd[c] - s.p_normal_damping) * dt <= 1e-12 * e);
+    CHECK(std::abs(buf.p_td[c] - s.p_tangential_damping) * dt <= 1e-12 * e);
+    CHECK(buf.delta[c] == g.delta);
+  }
+  // Both branches of the cap were exercised.
+  CHECK(sliding > 20);
+  CHECK(sliding < n / 2 - 20);
+}
