@@ -139,7 +139,7 @@ inline std::size_t energy_blocks(std::size_t n) {
 /// take the scalar kernel), the lanes evaluate the law, and a last loop over the touching pairs,
 /// in pair order, books them and adds their forces: to the rows' sums, after the scalar ones, and
 /// to the j side.
-template <class Table>
+template <class Rolling, class Table>
 void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted& pr,
                      const DemSettings& s, PairList& pl, double time, RowSums& sums,
                      EnergyRates* rates, std::size_t b0, std::size_t b1) {
@@ -170,15 +170,21 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
       sums.t[i] = t;
     }
     if (!buf.k.empty())
-      hertz_mindlin_lanes(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
+      hertz_mindlin_lanes<Rolling>(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
     for (std::size_t q = 0; q < buf.k.size(); ++q) {
       const std::size_t k = std::size_t(buf.k[q]), i = std::size_t(buf.i[q]);
       const Vec3 force(buf.fx[q], buf.fy[q], buf.fz[q]), tc(buf.cx[q], buf.cy[q], buf.cz[q]);
       const std::uint32_t slot = pl.jslot[k];
       pl.j_force[slot] = -force;
-      pl.j_torque[slot] = buf.aj[q] * tc;
+      if constexpr (Rolling::active) {
+        const Vec3 m_roll(buf.mx[q], buf.my[q], buf.mz[q]);
+        pl.j_torque[slot] = buf.aj[q] * tc - m_roll;
+        sums.t[i] += buf.ai[q] * tc + m_roll;
+      } else {
+        pl.j_torque[slot] = buf.aj[q] * tc;
+        sums.t[i] += buf.ai[q] * tc;
+      }
       sums.f[i] += force;
-      sums.t[i] += buf.ai[q] * tc;
       // book() for a touching contact, from the lanes' values.
       ContactTally& tl = pl.tally[k];
       ContactRecord& rc = pl.record[k];
@@ -190,6 +196,10 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
       }
       const double pw = buf.p_nd[q] + buf.p_td[q];
       tl.e_dissipated += 0.5 * dt * (tl.p_damping + pw) + buf.e_sl[q];
+      if constexpr (Rolling::active) {
+        tl.e_dissipated += buf.e_ro[q];
+        block.e_rolling += buf.e_ro[q];
+      }
       tl.p_damping = pw;
       tl.u_elastic = buf.u_el[q];
       block.p_normal_damping += buf.p_nd[q];
@@ -214,9 +224,11 @@ template <class Table>
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  EnergyRates* rates, std::size_t b0, std::size_t b1) {
   using Law = typename Table::law_type;
-  if constexpr (std::is_same_v<Law, ContactLaw<HertzMindlin, NoRolling, NoCohesion>>) {
+  if constexpr (std::is_same_v<typename Law::Normal, HertzMindlin> && !Law::Cohesion::active &&
+                (!Law::Rolling::active ||
+                 std::is_same_v<typename Law::Rolling, ConstantTorqueRolling>)) {
     if (tab.n_materials == 1)  // one parameter set: the lanes take it as constants
-      return pair_rows_lanes(tab, p, pr, s, pl, time, sums, rates, b0, b1);
+      return pair_rows_lanes<typename Law::Rolling>(tab, p, pr, s, pl, time, sums, rates, b0, b1);
   }
   const double range = tab.range;
   const Domain& dom = s.domain;

@@ -1,13 +1,14 @@
 #pragma once
-// The Hertz-Mindlin law without rolling or cohesion evaluated over a block's touching pairs in SIMD
-// lanes (issue: a lean DEM data path). The scalar law (contact_law.hpp) is bound by its dependency
-// chain, three roots and two divisions in series per contact; here each lane takes one contact,
-// branch-free: both sides of the sliding test are computed and selected. The arithmetic is the
-// scalar law's, term by term (contact_law.hpp gives the physics and the energy bookkeeping), so
-// the results agree to round-off (tested against it in tests/dem/test_pair_lanes.cpp). Private to
-// dem_passes.hpp.
+// The Hertz-Mindlin law without cohesion, with no rolling model or the constant-torque one,
+// evaluated over a block's touching pairs in SIMD lanes (issue: a lean DEM data path). The scalar
+// law (contact_law.hpp) is bound by its dependency chain, three roots and two divisions in series
+// per contact; here each lane takes one contact, branch-free: both sides of the sliding test are
+// computed and selected. The arithmetic is the scalar law's, term by term (contact_law.hpp gives
+// the physics and the energy bookkeeping), so the results agree to round-off (tested against it in
+// tests/dem/test_pair_lanes.cpp). Private to dem_passes.hpp.
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "dem/contact/contact_law.hpp"
@@ -24,6 +25,7 @@ struct LaneBuffer {
   // the normal force, the normal and tangential relative speeds (impact record) and the overlap.
   std::vector<double> fx, fy, fz, cx, cy, cz, ai, aj;
   std::vector<double> p_nd, p_td, e_sl, e_st, u_el, fn, vn, vt, delta;
+  std::vector<double> mx, my, mz, e_ro;  // rolling torque on i and its loss (constant torque)
 
   void clear() {
     k.clear(), i.clear(), j.clear(), dx.clear(), dy.clear(), dz.clear(), dist.clear();
@@ -35,19 +37,30 @@ struct LaneBuffer {
   }
   void size_results() {
     const std::size_t n = k.size();
-    for (auto* v : {&fx, &fy, &fz, &cx, &cy, &cz, &ai, &aj, &p_nd, &p_td, &e_sl, &e_st, &u_el, &fn,
-                    &vn, &vt, &delta})
+    for (auto* v : {&fx,   &fy,   &fz, &cx, &cy, &cz,    &ai, &aj, &p_nd, &p_td, &e_sl,
+                    &e_st, &u_el, &fn, &vn, &vt, &delta, &mx, &my, &mz,   &e_ro})
       v->resize(n);
   }
 };
 
 /// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
-/// pair, updating the tangential springs in `history` and writing the results into `b`.
-inline void hertz_mindlin_lanes(
-    const typename ContactLaw<HertzMindlin, NoRolling, NoCohesion>::Params& prm,
-    const ParticleArrays& p, const std::vector<Vec3>& v_pred, const std::vector<Vec3>& w_pred,
-    SpringHistory* history, double dt, LaneBuffer& b) {
+/// pair, updating the tangential springs in `history` and writing the results into `b`. Rolling:
+/// NoRolling or ConstantTorqueRolling (rolling_resistance.hpp).
+template <class Rolling>
+void hertz_mindlin_lanes(const typename ContactLaw<HertzMindlin, Rolling, NoCohesion>::Params& prm,
+                         const ParticleArrays& p, const std::vector<Vec3>& v_pred,
+                         const std::vector<Vec3>& w_pred, SpringHistory* history, double dt,
+                         LaneBuffer& b) {
+  constexpr bool kRolling = Rolling::active;
+  static_assert(!kRolling || std::is_same_v<Rolling, ConstantTorqueRolling>);
   b.size_results();
+  double mu_r = 0, arm = 0;
+  if constexpr (kRolling) mu_r = prm.rolling.mu_r, arm = prm.rolling.arm_factor;
+  const double* IN = p.inertia.data();
+  double* __restrict MX = b.mx.data();
+  double* __restrict MY = b.my.data();
+  double* __restrict MZ = b.mz.data();
+  double* __restrict ERO = b.e_ro.data();
   const double E = prm.normal.e_star, G = prm.normal.g_star, cd = prm.normal.c_damp;
   const double tr = prm.tangential_damping ? prm.normal.t_ratio : 0.0, mu = prm.friction;
   const double* R = p.radius.data();
@@ -163,6 +176,21 @@ inline void hertz_mindlin_lanes(
     VN[q] = vn;
     VT[q] = std::sqrt(vtx * vtx + vty * vty + vtz * vtz);
     DL[q] = delta;
+    if constexpr (kRolling) {
+      // Constant directional torque on the relative rolling rate (end of step), limited to what
+      // stops it within the step; none without a normal load or a rolling rate.
+      const double wx = WP[a3] - WP[b3], wy = WP[a3 + 1] - WP[b3 + 1], wz = WP[a3 + 2] - WP[b3 + 2];
+      const double wn = wx * nx + wy * ny + wz * nz;
+      const double rx = wx - wn * nx, ry = wy - wn * ny, rz = wz - wn * nz;
+      const double w = std::sqrt(rx * rx + ry * ry + rz * rz);
+      const double i_star = IN[i] * IN[j] / (IN[i] + IN[j]);
+      const double m_cap = mu_r * arm * r_star * fnv, m_stop = i_star * w / dt;
+      const double m = m_cap < m_stop ? m_cap : m_stop;
+      const bool on = w > 0 && fnv > 0;
+      const double per = on ? m / (w > 0 ? w : 1.0) : 0.0;
+      MX[q] = -per * rx, MY[q] = -per * ry, MZ[q] = -per * rz;
+      ERO[q] = on ? m * w * dt : 0.0;
+    }
   }
 }
 

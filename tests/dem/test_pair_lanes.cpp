@@ -1,6 +1,7 @@
 // The lane form of the Hertz-Mindlin law (dem/pair_lanes.hpp) against the scalar law it must equal
-// (ContactLaw<HertzMindlin, NoRolling, NoCohesion>::evaluate): random touching pairs with random
-// velocities, spins and springs, a third of them sliding, every output and the updated spring.
+// (ContactLaw<HertzMindlin, Rolling, NoCohesion>::evaluate, without rolling and with the
+// constant-torque model): random touching pairs with random velocities, spins and springs, a third
+// of them sliding, every output and the updated spring.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -17,15 +18,18 @@
 
 using namespace lbdem;
 using namespace lbdem::dem;
-using Law = ContactLaw<HertzMindlin, NoRolling, NoCohesion>;
+namespace {
 
-TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and sliding", "[dem]") {
+template <class Rolling>
+void compare_lanes() {
+  using Law = ContactLaw<HertzMindlin, Rolling, NoCohesion>;
   MaterialPair mp{};
   mp.e_star = 5e6 / (2 * (1 - 0.09));
   mp.g_star = mp.e_star * 0.4;
   mp.restitution = 0.5;
   mp.friction = 0.3;
-  const Law::Params prm{HertzMindlin::from(mp, 0.0), mp.friction, true, {}, {}};
+  typename Law::Params prm{HertzMindlin::from(mp, 0.0), mp.friction, true, {}, {}};
+  if constexpr (Rolling::active) prm.rolling = {0.05, 1.0};  // mu_r, arm / R*
   const double dt = 1e-6;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.5, 1.5);
@@ -56,8 +60,8 @@ TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and slidi
     scalar[c] = lanes[c];
     buf.push(std::size_t(c), std::size_t(i), std::uint32_t(j), d[c], d[c].norm());
   }
-  hertz_mindlin_lanes(prm, p, vp, wp, lanes.data(), dt, buf);
-  int sliding = 0;
+  hertz_mindlin_lanes<Rolling>(prm, p, vp, wp, lanes.data(), dt, buf);
+  int sliding = 0, rolling = 0;
   for (int c = 0; c < n / 2; ++c) {
     CAPTURE(c);
     const int i = 2 * c, j = 2 * c + 1;
@@ -67,7 +71,7 @@ TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and slidi
     g.delta = rs - dist;
     g.r_star = ri * rj / rs;
     g.m_star = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-    g.i_star = 0;
+    g.i_star = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
     const double ai = ri - 0.5 * g.delta, aj = rj - 0.5 * g.delta;
     g.v_rel = vp[i] - vp[j] + (ai * wp[i] + aj * wp[j]).cross(g.n);
     g.w_rel = wp[i] - wp[j];
@@ -94,8 +98,22 @@ TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and slidi
     CHECK(std::abs(buf.p_nd[c] - s.p_normal_damping) * dt <= 1e-12 * e);
     CHECK(std::abs(buf.p_td[c] - s.p_tangential_damping) * dt <= 1e-12 * e);
     CHECK(buf.delta[c] == g.delta);
+    if constexpr (Rolling::active) {
+      rolling += s.e_rolling > 0;
+      const double ms = s.m_roll.norm();
+      CHECK((Vec3(buf.mx[c], buf.my[c], buf.mz[c]) - s.m_roll).norm() <= 1e-12 * ms);
+      CHECK(std::abs(buf.e_ro[c] - s.e_rolling) <= 1e-12 * (e + s.e_rolling));
+    }
   }
+  if constexpr (Rolling::active) CHECK(rolling > n / 4);
   // Both branches of the cap were exercised.
   CHECK(sliding > 20);
   CHECK(sliding < n / 2 - 20);
+}
+
+}  // namespace
+
+TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and sliding", "[dem]") {
+  compare_lanes<NoRolling>();
+  compare_lanes<ConstantTorqueRolling>();
 }
