@@ -134,6 +134,25 @@ inline std::size_t energy_blocks(std::size_t n) {
   return (n + kEnergyBlock - 1) / kEnergyBlock;
 }
 
+/// Calls visit(k, d, r2) for each listed pair k of row i that interacts now (within reach, or in a
+/// contact the last evaluation left open), in ascending k; d = x_j - x_i (minimum image). The
+/// distance test stays in the loop: most listed pairs are in the skin only, and the kernel's large
+/// frame is set up just for those that interact.
+template <class Visit>
+inline void interacting_pairs(const ParticleArrays& p, const PairList& pl, const Domain& dom,
+                              double range, std::size_t i, Visit&& visit) {
+  const bool per = dom.any_periodic();
+  for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
+    const std::uint32_t j = pl.j[k];
+    Vec3 d = p.x[j] - p.x[i];
+    if (per) d = dom.min_image(d);
+    const double r2 = d.squaredNorm();
+    const double reach = p.radius[i] + p.radius[j] + range;
+    if (r2 >= reach * reach && !pl.state[k]) continue;
+    visit(k, d, r2);
+  }
+}
+
 /// The pair pass of a law with a lane form (pair_lanes.hpp) over the rows of blocks [b0, b1): the
 /// distance loop sends each touching pair to the lanes (others, a contact that ends this step,
 /// take the scalar kernel), the lanes evaluate the law, and a last loop over the touching pairs,
@@ -145,7 +164,7 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
                      EnergyRates* rates, std::size_t b0, std::size_t b1) {
   const double range = tab.range, dt = s.dt;
   const Domain& dom = s.domain;
-  const bool per = dom.any_periodic(), rows = s.collisions.rows;
+  const bool rows = s.collisions.rows;
   const std::size_t n = p.size();
   thread_local LaneBuffer buf;
   for (std::size_t b = b0; b < b1; ++b) {
@@ -153,19 +172,14 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
     buf.clear();
     for (std::size_t i = b * kEnergyBlock; i < std::min(n, (b + 1) * kEnergyBlock); ++i) {
       Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-      for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
+      interacting_pairs(p, pl, dom, range, i, [&](std::size_t k, const Vec3& d, double r2) {
         const std::uint32_t j = pl.j[k];
-        Vec3 d = p.x[j] - p.x[i];
-        if (per) d = dom.min_image(d);
-        const double r2 = d.squaredNorm();
-        const double rs = p.radius[i] + p.radius[j], reach = rs + range;
-        if (r2 >= reach * reach && !pl.state[k]) continue;
         const double dist = std::sqrt(r2);
-        if (rs - dist > 0)
+        if (p.radius[i] + p.radius[j] - dist > 0)
           buf.push(k, i, j, d, dist);
         else
           pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t, block);
-      }
+      });
       sums.f[i] = f;
       sums.t[i] = t;
     }
@@ -232,23 +246,14 @@ template <class Table>
   }
   const double range = tab.range;
   const Domain& dom = s.domain;
-  const bool per = dom.any_periodic();
   const std::size_t n = p.size();
   for (std::size_t b = b0; b < b1; ++b) {
     EnergyRates block;
-    // The distance test stays in the loop: most listed pairs are in the skin only, and the
-    // kernel's large frame is set up just for those that interact.
     for (std::size_t i = b * kEnergyBlock; i < std::min(n, (b + 1) * kEnergyBlock); ++i) {
       Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-      for (std::size_t k = pl.first[i]; k < pl.first[i + 1]; ++k) {
-        const std::uint32_t j = pl.j[k];
-        Vec3 d = p.x[j] - p.x[i];
-        if (per) d = dom.min_image(d);
-        const double r2 = d.squaredNorm();
-        const double reach = p.radius[i] + p.radius[j] + range;
-        if (r2 >= reach * reach && !pl.state[k]) continue;
+      interacting_pairs(p, pl, dom, range, i, [&](std::size_t k, const Vec3& d, double r2) {
         pair_kernel(tab, p, pr, s, pl, time, k, d, r2, f, t, block);
-      }
+      });
       sums.f[i] = f;
       sums.t[i] = t;
     }
