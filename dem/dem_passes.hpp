@@ -158,7 +158,7 @@ inline void interacting_pairs(const ParticleArrays& p, const PairList& pl, const
 /// take the scalar kernel), the lanes evaluate the law, and a last loop over the touching pairs,
 /// in pair order, books them and adds their forces: to the rows' sums, after the scalar ones, and
 /// to the j side.
-template <class Rolling, class Table>
+template <class Normal, class Rolling, class Table>
 void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted& pr,
                      const DemSettings& s, PairList& pl, double time, RowSums& sums,
                      EnergyRates* rates, std::size_t b0, std::size_t b1) {
@@ -184,7 +184,7 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
       sums.t[i] = t;
     }
     if (!buf.k.empty())
-      hertz_mindlin_lanes<Rolling>(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
+      contact_lanes<Normal, Rolling>(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
     for (std::size_t q = 0; q < buf.k.size(); ++q) {
       const std::size_t k = std::size_t(buf.k[q]), i = std::size_t(buf.i[q]);
       const Vec3 force(buf.fx[q], buf.fy[q], buf.fz[q]), tc(buf.cx[q], buf.cy[q], buf.cz[q]);
@@ -238,11 +238,12 @@ template <class Table>
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  EnergyRates* rates, std::size_t b0, std::size_t b1) {
   using Law = typename Table::law_type;
-  if constexpr (std::is_same_v<typename Law::Normal, HertzMindlin> && !Law::Cohesion::active &&
+  if constexpr (!Law::Cohesion::active &&
                 (!Law::Rolling::active ||
                  std::is_same_v<typename Law::Rolling, ConstantTorqueRolling>)) {
     if (tab.n_materials == 1)  // one parameter set: the lanes take it as constants
-      return pair_rows_lanes<typename Law::Rolling>(tab, p, pr, s, pl, time, sums, rates, b0, b1);
+      return pair_rows_lanes<typename Law::Normal, typename Law::Rolling>(tab, p, pr, s, pl, time,
+                                                                          sums, rates, b0, b1);
   }
   const double range = tab.range;
   const Domain& dom = s.domain;

@@ -1,11 +1,11 @@
 #pragma once
-// The Hertz-Mindlin law without cohesion, with no rolling model or the constant-torque one,
-// evaluated over a block's touching pairs in SIMD lanes (issue: a lean DEM data path). The scalar
-// law (contact_law.hpp) is bound by its dependency chain, three roots and two divisions in series
-// per contact; here each lane takes one contact, branch-free: both sides of the sliding test are
-// computed and selected. The arithmetic is the scalar law's, term by term (contact_law.hpp gives
-// the physics and the energy bookkeeping), so the results agree to round-off (tested against it in
-// tests/dem/test_pair_lanes.cpp). Private to dem_passes.hpp.
+// The Hertz-Mindlin and linear laws without cohesion, with no rolling model or the
+// constant-torque one, evaluated over a block's touching pairs in SIMD lanes (issue: a lean DEM
+// data path). The scalar law (contact_law.hpp) is bound by its dependency chain, three roots and
+// two divisions in series per contact; here each lane takes one contact, branch-free: both sides of
+// the sliding test are computed and selected. The arithmetic is the scalar law's, term by term
+// (contact_law.hpp gives the physics and the energy bookkeeping), so the results agree to round-off
+// (tested against it in tests/dem/test_pair_lanes.cpp). Private to dem_passes.hpp.
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -44,13 +44,16 @@ struct LaneBuffer {
 };
 
 /// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
-/// pair, updating the tangential springs in `history` and writing the results into `b`. Rolling:
-/// NoRolling or ConstantTorqueRolling (rolling_resistance.hpp).
-template <class Rolling>
-void hertz_mindlin_lanes(const typename ContactLaw<HertzMindlin, Rolling, NoCohesion>::Params& prm,
-                         const ParticleArrays& p, const std::vector<Vec3>& v_pred,
-                         const std::vector<Vec3>& w_pred, SpringHistory* history, double dt,
-                         LaneBuffer& b) {
+/// pair, updating the tangential springs in `history` and writing the results into `b`. Normal:
+/// HertzMindlin or LinearSpringDashpot; Rolling: NoRolling or ConstantTorqueRolling
+/// (rolling_resistance.hpp).
+template <class Normal, class Rolling>
+void contact_lanes(const typename ContactLaw<Normal, Rolling, NoCohesion>::Params& prm,
+                   const ParticleArrays& p, const std::vector<Vec3>& v_pred,
+                   const std::vector<Vec3>& w_pred, SpringHistory* history, double dt,
+                   LaneBuffer& b) {
+  constexpr bool kHertz = std::is_same_v<Normal, HertzMindlin>;
+  static_assert(kHertz || std::is_same_v<Normal, LinearSpringDashpot>);
   constexpr bool kRolling = Rolling::active;
   static_assert(!kRolling || std::is_same_v<Rolling, ConstantTorqueRolling>);
   b.size_results();
@@ -61,7 +64,14 @@ void hertz_mindlin_lanes(const typename ContactLaw<HertzMindlin, Rolling, NoCohe
   double* __restrict MY = b.my.data();
   double* __restrict MZ = b.mz.data();
   double* __restrict ERO = b.e_ro.data();
-  const double E = prm.normal.e_star, G = prm.normal.g_star, cd = prm.normal.c_damp;
+  // Hertz: E*, G*; linear: k, k_t / k_n and an absolute damping coefficient if set.
+  double E = 0, G = 0, k_lin = 0, kt_ratio = 0, gamma_abs = 0;
+  if constexpr (kHertz) {
+    E = prm.normal.e_star, G = prm.normal.g_star;
+  } else {
+    k_lin = prm.normal.k, kt_ratio = prm.normal.kt_ratio, gamma_abs = prm.normal.gamma_abs;
+  }
+  const double cd = prm.normal.c_damp;
   const double tr = prm.tangential_damping ? prm.normal.t_ratio : 0.0, mu = prm.friction;
   const double* R = p.radius.data();
   const double* M = p.mass.data();
@@ -118,10 +128,16 @@ void hertz_mindlin_lanes(const typename ContactLaw<HertzMindlin, Rolling, NoCohe
                  uy = V[a3 + 1] - V[b3 + 1] + (hz_ * nx - hx_ * nz),
                  uz = V[a3 + 2] - V[b3 + 2] + (hx_ * ny - hy_ * nx);
     // Hertz normal force with Tsuji damping; Mindlin's k_t.
-    const double a = std::sqrt(r_star * delta);
-    const double kn = 4.0 / 3.0 * E * a, f_el = kn * delta, kt = 8.0 * G * a;
+    double kn, f_el, kt, u_n;
+    if constexpr (kHertz) {
+      const double a = std::sqrt(r_star * delta);
+      kn = 4.0 / 3.0 * E * a, f_el = kn * delta, kt = 8.0 * G * a, u_n = 0.4 * f_el * delta;
+    } else {
+      kn = k_lin, f_el = k_lin * delta, kt = kt_ratio * k_lin, u_n = 0.5 * k_lin * delta * delta;
+    }
     const double vn = vx * nx + vy * ny + vz * nz;
-    const double gam = cd * std::sqrt(m_star * kn);
+    double gam = cd * std::sqrt(m_star * kn);
+    if constexpr (!kHertz) gam = gamma_abs > 0 ? gamma_abs : gam;
     const double fnv = f_el + gam * vn;
     const double vtx = vx - vn * nx, vty = vy - vn * ny, vtz = vz - vn * nz;
     // The spring turned into the tangent plane, its length kept.
@@ -171,7 +187,7 @@ void hertz_mindlin_lanes(const typename ContactLaw<HertzMindlin, Rolling, NoCohe
     PTD[q] = slide ? 0.0 : ptd;
     ESL[q] = slide ? esl : 0.0;
     EST[q] = 0.5 * (kt - kt_old) * (s0 * x0 + s1 * x1 + s2 * x2);
-    UEL[q] = 0.4 * f_el * delta + 0.5 * kt * (x0 * x0 + x1 * x1 + x2 * x2);
+    UEL[q] = u_n + 0.5 * kt * (x0 * x0 + x1 * x1 + x2 * x2);
     FN[q] = fnv;
     VN[q] = vn;
     VT[q] = std::sqrt(vtx * vtx + vty * vty + vtz * vtz);

@@ -1,5 +1,5 @@
-// The lane form of the Hertz-Mindlin law (dem/pair_lanes.hpp) against the scalar law it must equal
-// (ContactLaw<HertzMindlin, Rolling, NoCohesion>::evaluate, without rolling and with the
+// The lane form of the Hertz-Mindlin and linear laws (dem/pair_lanes.hpp) against the scalar law
+// it must equal (ContactLaw<Normal, Rolling, NoCohesion>::evaluate, without rolling and with the
 // constant-torque model): random touching pairs with random velocities, spins and springs, a third
 // of them sliding, every output and the updated spring.
 #include <catch2/catch.hpp>
@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -20,15 +21,16 @@ using namespace lbdem;
 using namespace lbdem::dem;
 namespace {
 
-template <class Rolling>
+template <class Normal, class Rolling>
 void compare_lanes() {
-  using Law = ContactLaw<HertzMindlin, Rolling, NoCohesion>;
+  using Law = ContactLaw<Normal, Rolling, NoCohesion>;
   MaterialPair mp{};
   mp.e_star = 5e6 / (2 * (1 - 0.09));
   mp.g_star = mp.e_star * 0.4;
   mp.restitution = 0.5;
   mp.friction = 0.3;
-  typename Law::Params prm{HertzMindlin::from(mp, 0.0), mp.friction, true, {}, {}};
+  mp.stiffness = 1000;
+  typename Law::Params prm{Normal::from(mp, 2.0 / 7.0), mp.friction, true, {}, {}};
   if constexpr (Rolling::active) prm.rolling = {0.05, 1.0};  // mu_r, arm / R*
   const double dt = 1e-6;
   std::mt19937_64 rng(7);
@@ -56,11 +58,14 @@ void compare_lanes() {
     // A spring partly out of the tangent plane; every third one long enough to slide.
     const double len = (c % 3 == 0 ? 1e-4 : 1e-8) * pos(rng);
     lanes[c].xi = Vec3(u(rng), u(rng), u(rng)).normalized() * len;
-    lanes[c].kt = 8 * mp.g_star * std::sqrt(2.5e-4 * overlap) * pos(rng);
+    lanes[c].kt =
+        (std::is_same_v<Normal, HertzMindlin> ? 8 * mp.g_star * std::sqrt(2.5e-4 * overlap)
+                                              : 2.0 / 7.0 * mp.stiffness) *
+        pos(rng);
     scalar[c] = lanes[c];
     buf.push(std::size_t(c), std::size_t(i), std::uint32_t(j), d[c], d[c].norm());
   }
-  hertz_mindlin_lanes<Rolling>(prm, p, vp, wp, lanes.data(), dt, buf);
+  contact_lanes<Normal, Rolling>(prm, p, vp, wp, lanes.data(), dt, buf);
   int sliding = 0, rolling = 0;
   for (int c = 0; c < n / 2; ++c) {
     CAPTURE(c);
@@ -113,7 +118,12 @@ void compare_lanes() {
 
 }  // namespace
 
-TEST_CASE("the Hertz-Mindlin lane form equals the scalar law, sticking and sliding", "[dem]") {
-  compare_lanes<NoRolling>();
-  compare_lanes<ConstantTorqueRolling>();
+TEST_CASE(
+    "the lane form of the Hertz-Mindlin and linear laws equals the scalar law, sticking and "
+    "sliding",
+    "[dem]") {
+  compare_lanes<HertzMindlin, NoRolling>();
+  compare_lanes<HertzMindlin, ConstantTorqueRolling>();
+  compare_lanes<LinearSpringDashpot, NoRolling>();
+  compare_lanes<LinearSpringDashpot, ConstantTorqueRolling>();
 }
