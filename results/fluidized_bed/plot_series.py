@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draws the figures of this folder from its kept series: bed_series.png, bed height and
 pressure drop over time for the Bond-number-10 original against its coarse-grained runs (left)
-and for the cohesionless CG 2-4 runs (right); displaced_gas.png, the cohesionless CG 3 and 4 beds
+and for the cohesionless CG 2-4 runs (right); displaced_gas.png, the cohesionless CG 2, 3 and 4 beds
 before and with the displaced gas. Run from the repository root:
     /usr/bin/python3 results/fluidized_bed/plot_series.py"""
 import os
@@ -53,7 +53,8 @@ print("wrote", out)
 # The cohesionless CG 3 and 4 beds before and with the displaced gas (d(eps)/dt in the gas
 # continuity): the plug oscillation the term damps.
 fig, ax = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
-for name, label in [("cg3", "CG 3, before the term"), ("cg3_displaced", "CG 3, displaced gas"),
+for name, label in [("cg2", "CG 2, before the term"), ("cg2_displaced", "CG 2, displaced gas"),
+                    ("cg3", "CG 3, before the term"), ("cg3_displaced", "CG 3, displaced gas"),
                     ("cg4", "CG 4, before the term"), ("cg4_displaced", "CG 4, displaced gas")]:
     t, h, dp = series(name)
     keep = t >= 0.15
