@@ -1,11 +1,11 @@
 #pragma once
 // The Hertz-Mindlin and linear laws without cohesion, with no rolling model or the
-// constant-torque one, evaluated over a block's touching pairs in SIMD lanes (issue: a lean DEM
-// data path). The scalar law (contact_law.hpp) is bound by its dependency chain, three roots and
-// two divisions in series per contact; here each lane takes one contact, branch-free: both sides of
-// the sliding test are computed and selected. The arithmetic is the scalar law's, term by term
-// (contact_law.hpp gives the physics and the energy bookkeeping), so the results agree to round-off
-// (tested against it in tests/dem/test_pair_lanes.cpp). Private to dem_passes.hpp.
+// constant-torque one, evaluated over a block's touching pairs in SIMD lanes (docs/performance.md
+// has the measurements). The scalar law (contact_law.hpp) is bound by its dependency chain, three
+// roots and two divisions in series per contact; here each lane takes one contact, branch-free:
+// both sides of the sliding test are computed and selected. The arithmetic is the scalar law's,
+// term by term (contact_law.hpp gives the physics and the energy bookkeeping), so the results agree
+// to round-off (tested against it in tests/dem/test_pair_lanes.cpp). Private to dem_passes.hpp.
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
