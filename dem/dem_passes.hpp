@@ -241,7 +241,10 @@ template <class Table>
   if constexpr (!Law::Cohesion::active &&
                 (!Law::Rolling::active ||
                  std::is_same_v<typename Law::Rolling, ConstantTorqueRolling>)) {
-    if (tab.n_materials == 1)  // one parameter set: the lanes take it as constants
+    // One parameter set (the lanes take it as constants), and indices the lanes' 32-bit gathers
+    // reach (4 per pair, 3 per particle).
+    if (tab.n_materials == 1 && pl.size() < (std::size_t(1) << 29) &&
+        p.size() < (std::size_t(1) << 29))
       return pair_rows_lanes<typename Law::Normal, typename Law::Rolling>(tab, p, pr, s, pl, time,
                                                                           sums, rates, b0, b1);
   }
