@@ -28,7 +28,6 @@ struct ContactTally {
 struct EnergyRates {
   double p_normal_damping = 0, p_tangential_damping = 0;
   double e_sliding = 0, e_rolling = 0, e_stiffness = 0;
-  static constexpr std::size_t kWidth = 5;
 };
 
 /// Impact record of the contact a pair is in now, for the statistics and the opt-in rows: written
