@@ -1,10 +1,9 @@
 #pragma once
-// The `run` and `study` verbs: scenario table, run folder life cycle, resume, plots.
+// The `run` verb: scenario table, run folder life cycle, resume, plots.
 #include <string>
 #include <vector>
 
 #include "core/config.hpp"
-#include "scenarios/study_options.hpp"
 
 namespace lbdem::scenarios {
 
@@ -18,8 +17,6 @@ struct RunOptions {
 /// Validates the whole input before anything is written (InputError -> exit 2, no run folder), then
 /// creates the run folder, writes config.toml and log.txt, runs, and makes the plots.
 int run_scenario(const RunOptions& opt);
-/// Runs the named study's cases one after another (see each study's header).
-int run_study(const StudyOptions& opt);
 
 /// The scenarios' names, as `run --list` gives them.
 std::vector<std::string> scenario_names();

@@ -179,7 +179,7 @@ def impeller_rpm(t, rpm, start, ramp):
 
 def steady_window_start(rpm, start, ramp):
     """Start of the rheometer's steady window: one revolution after the impeller starts, as the
-    rheometer study takes it (scenarios/rheometer/rheometer_study.cpp), or the end of the ramp if
+    rheometer study takes it (studies/rheometer_study.cpp), or the end of the ramp if
     that is later."""
     rev = 60.0 / max(abs(rpm), 1e-300)
     return start + max(rev, ramp)

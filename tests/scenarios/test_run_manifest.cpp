@@ -12,10 +12,11 @@
 #include "helpers/cli.hpp"
 #include "scenarios/common/run_cost.hpp"
 #include "scenarios/common/run_manifest.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
 using namespace lbdem;
 using namespace lbdem::scenarios;
+using namespace lbdem::studies;
 namespace fs = std::filesystem;
 
 TEST_CASE("run manifest: written and read back exactly", "[scenarios]") {

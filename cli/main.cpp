@@ -7,9 +7,11 @@
 #include "core/error.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/run_command.hpp"
+#include "studies/study_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace lbdem::scenarios;
+  using lbdem::studies::StudyOptions;
   // Every file is closed by its owner before exit. HDF5's own clean-up at exit would close again a
   // file whose close failed (a full disk) and crash after the error was reported.
   H5dont_atexit();
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
                    "simulated end time of every case [s] (a measured window; default: presets)")
       ->check(CLI::PositiveNumber);
   study->add_option("--set", so.sets, "override a key in every new case (repeatable)");
-  study->add_option("--out", so.out, "study folder (default: studies/<name>)");
+  study->add_option("--out", so.out, "study folder (default: runs/studies/<name>)");
   study->add_option("--threads", so.threads, "OpenMP threads (default: all cores)");
   study->add_flag("--no-plots", so.no_plots, "skip the PNG plots");
   study->add_flag("--list", so.list, "list the studies");
@@ -67,7 +69,7 @@ int main(int argc, char** argv) {
       throw lbdem::InputError("--threads", std::to_string(threads), "must be at least 1",
                               "give a thread count >= 1, or leave --threads out to use all cores");
     if (*config) return print_config_reference();
-    if (*study) return run_study(so);
+    if (*study) return lbdem::studies::run_study(so);
     return run_scenario(opt);
   } catch (const lbdem::InputError& e) {
     std::cerr << "lbdem: error: " << e.what() << "\n";

@@ -10,9 +10,9 @@
 // lbdem-collision-stats (collision frequency, dissipated energy by mechanism) and
 // lbdem-compare-runs (kinetic energy), drawn by tools/jet_mill_figures.py, and a table (study.csv).
 // --quick runs every case on 1 mm cells to 4 ms of study time (a check of the chain, minutes).
-#include "scenarios/study_options.hpp"
+#include "studies/study_options.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 int run_jet_mill_study(const StudyOptions& opt);
 
@@ -28,4 +28,4 @@ struct FigureWindow {
 };
 FigureWindow figure_window(double spin_up, bool quick, double row_interval);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "scenarios/rheometer/rheometer_study.hpp"
+#include "studies/rheometer_study.hpp"
 
 using namespace lbdem;
 
 TEST_CASE("Rheometer study: torque summary of a signal with known mean, amplitude and peak",
-          "[scenarios]") {
+          "[studies]") {
   // 600 rpm from t = 0.2 s: the steady window starts one revolution (0.1 s) later. Samples every
   // 1 ms to 1.2 s. Steady part: 0.05 + 0.01 sin(2 pi 20 t) N m (20 Hz, whole periods per 0.05 s
   // block); a 0.1 N m bump in the first revolution sets the peak.
@@ -21,7 +21,7 @@ TEST_CASE("Rheometer study: torque summary of a signal with known mean, amplitud
     if (s > 0.22 && s <= 0.24) v += 0.1;
     t.push_back(s), q.push_back(v);
   }
-  const auto r = scenarios::summarize_torque(t, q, 0.2, 600);
+  const auto r = studies::summarize_torque(t, q, 0.2, 600);
   // Whole periods per sample window: the mean and sd are exact up to the sampling of the sine
   // (1e-12 on the mean; sd = 0.01 / sqrt2 within 0.1 % for 50 samples per period).
   CHECK(r.steady == Approx(0.05).margin(1e-12));

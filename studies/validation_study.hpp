@@ -6,10 +6,10 @@
 // (comparison.png), and the study joins the tables into validation.csv. Cases: the Mueller et al.
 // bed with no-slip and with free-slip gas walls, the van Wachem et al. bed, and the free-slip
 // Mueller bed coarse-grained at l = 1.5 and 2.
-#include "scenarios/study_options.hpp"
+#include "studies/study_options.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 int run_validation_study(const StudyOptions& opt);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

@@ -1,4 +1,4 @@
-// The study tables' cost split (scenarios/common/study_case.hpp) on constructed run folders with
+// The study tables' cost split (studies/study_case.hpp) on constructed run folders with
 // hand-computed answers: the phase table parser (the last table after an offset, names with
 // spaces and colons), the per-part wall seconds per simulated second from summed phases and from
 // the last invocation's shares, and the coarse-graining speed-up columns against their ideals; and
@@ -8,7 +8,7 @@
 #include "core/h5.hpp"
 #include "core/phase_timer.hpp"
 #include "scenarios/common/run_cost.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
 #include <unistd.h>
 
@@ -18,6 +18,7 @@
 #include <sstream>
 
 using namespace lbdem::scenarios;
+using namespace lbdem::studies;
 namespace fs = std::filesystem;
 
 namespace {
@@ -64,7 +65,7 @@ std::map<std::string, double> phase_sums(const std::string& dir) {
 
 }  // namespace
 
-TEST_CASE("Study costs: the last phase table after an offset is read whole", "[scenarios]") {
+TEST_CASE("Study costs: the last phase table after an offset is read whole", "[studies]") {
   const fs::path dir =
       fs::temp_directory_path() / ("lbdem_test_study_costs_parse_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -91,7 +92,7 @@ TEST_CASE("Study costs: the last phase table after an offset is read whole", "[s
 }
 
 TEST_CASE("Study costs: parts per simulated second, and speed-ups against their ideals",
-          "[scenarios]") {
+          "[studies]") {
   const fs::path root =
       fs::temp_directory_path() / ("lbdem_test_study_costs_" + std::to_string(::getpid()));
   fs::remove_all(root);
@@ -143,7 +144,7 @@ TEST_CASE("Study costs: parts per simulated second, and speed-ups against their 
 }
 
 TEST_CASE("Study costs: the checkpoint's sums carry over, by phase name, or begin at an old one",
-          "[scenarios]") {
+          "[studies]") {
   const fs::path dir =
       fs::temp_directory_path() / ("lbdem_test_run_cost_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -218,7 +219,7 @@ TEST_CASE("Study costs: the checkpoint's sums carry over, by phase name, or begi
 }
 
 TEST_CASE("Study costs: a study case is timed from its run's checkpoint sums across a resume",
-          "[scenarios][checkpoint]") {
+          "[studies][checkpoint]") {
   const fs::path root =
       fs::temp_directory_path() / ("lbdem_test_study_case_cost_" + std::to_string(::getpid()));
   fs::remove_all(root);

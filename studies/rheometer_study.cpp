@@ -1,4 +1,4 @@
-#include "scenarios/rheometer/rheometer_study.hpp"
+#include "studies/rheometer_study.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -15,10 +15,13 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/types.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 #include "scenarios/run_command.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
+
+// A study builds on the scenarios' configs, geometry and run command.
+using namespace lbdem::scenarios;
 
 namespace fs = std::filesystem;
 
@@ -152,7 +155,7 @@ int run_rheometer_study(const StudyOptions& opt) {
   check_case_names(opt.cases, names, "rheometer");
   for (const std::size_t k : cases_to_run(opt.cases, names, std::vector<bool>(names.size(), true)))
     todo.push_back(&cases()[k]);
-  const std::string root = opt.out.empty() ? "studies/rheometer" : opt.out;
+  const std::string root = opt.out.empty() ? "runs/studies/rheometer" : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   std::ostringstream table;
@@ -228,4 +231,4 @@ int run_rheometer_study(const StudyOptions& opt) {
   return 0;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

@@ -1,4 +1,4 @@
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
 #include "scenarios/common/run_manifest.hpp"
 
@@ -20,7 +20,10 @@
 #include "scenarios/common/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
+
+// A study builds on the scenarios' configs, geometry and run command.
+using namespace lbdem::scenarios;
 
 namespace fs = std::filesystem;
 
@@ -360,4 +363,4 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   return rc;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

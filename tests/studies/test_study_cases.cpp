@@ -1,16 +1,16 @@
-// Which cases a study invocation runs, and in what order (scenarios/common/study_case.hpp): a
+// Which cases a study invocation runs, and in what order (studies/study_case.hpp): a
 // user resuming a long series names the case to run first, so --cases keeps the order given.
 #include <catch2/catch.hpp>
 
 #include <string>
 #include <vector>
 
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
-using lbdem::scenarios::cases_to_run;
+using lbdem::studies::cases_to_run;
 
 TEST_CASE("study cases run in the order --cases gives, or the study's defaults in its order",
-          "[scenarios]") {
+          "[studies]") {
   const std::vector<std::string> known = {"cg1", "cg2", "cg4", "cg8", "cg10", "extra"};
   const std::vector<bool> by_default = {true, true, true, true, true, false};
   using V = std::vector<std::size_t>;

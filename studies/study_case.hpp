@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "scenarios/study_options.hpp"
+#include "studies/study_options.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 struct StudyCase {
   std::string name, scenario, preset;  // preset: path of the TOML file
@@ -86,4 +86,4 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
 /// 0 if none.
 double banner_number(const std::string& log, const std::string& key, bool after_equals = false);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

@@ -1,4 +1,4 @@
-#include "scenarios/fluidized_bed/validation_study.hpp"
+#include "studies/validation_study.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -10,9 +10,9 @@
 
 #include "core/error.hpp"
 #include "core/h5.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 namespace fs = std::filesystem;
 
@@ -92,7 +92,7 @@ int run_validation_study(const StudyOptions& opt) {
   std::vector<std::string> names;
   for (const auto& c : cases()) names.push_back(c.name);
   check_case_names(opt.cases, names, "validation");
-  const std::string root = opt.out.empty() ? "studies/validation" : opt.out;
+  const std::string root = opt.out.empty() ? "runs/studies/validation" : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   for (const std::size_t k :
@@ -134,4 +134,4 @@ int run_validation_study(const StudyOptions& opt) {
   return 0;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

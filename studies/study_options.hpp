@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 struct StudyOptions {
   std::string name, out;
@@ -17,4 +17,4 @@ struct StudyOptions {
   double window_from = 0, window_to = 0;  // > 0: the statistics window [s] (fluidized_bed)
 };
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

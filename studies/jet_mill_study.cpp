@@ -1,4 +1,4 @@
-#include "scenarios/jet_mill/jet_mill_study.hpp"
+#include "studies/jet_mill_study.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,10 +18,13 @@
 #include "core/h5.hpp"
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
+
+// A study builds on the scenarios' configs, geometry and run command.
+using namespace lbdem::scenarios;
 
 namespace fs = std::filesystem;
 
@@ -145,7 +148,7 @@ int run_jet_mill_study(const StudyOptions& opt) {
     throw InputError("--end-time", fmt(opt.end_time), "--quick sets its own end time",
                      "give --quick or --end-time, not both");
   const std::string root =
-      opt.out.empty() ? (opt.quick ? "studies/jet_mill_quick" : "studies/jet_mill") : opt.out;
+      opt.out.empty() ? (opt.quick ? "runs/studies/jet_mill_quick" : "runs/studies/jet_mill") : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   // The feed starts after the gas spin-up: study time 0 is inflow.start of the presets.
@@ -412,4 +415,4 @@ int run_jet_mill_study(const StudyOptions& opt) {
   return 0;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

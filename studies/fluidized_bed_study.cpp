@@ -1,4 +1,4 @@
-#include "scenarios/fluidized_bed/fluidized_bed_study.hpp"
+#include "studies/fluidized_bed_study.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +14,9 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/types.hpp"
-#include "scenarios/common/study_case.hpp"
+#include "studies/study_case.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 namespace fs = std::filesystem;
 
@@ -98,7 +98,7 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   check_case_names(opt.cases, names, "fluidized_bed");
   for (const std::size_t k : cases_to_run(opt.cases, names, std::vector<bool>(names.size(), true)))
     todo.push_back(&cases()[k]);
-  const std::string root = opt.out.empty() ? "studies/fluidized_bed" : opt.out;
+  const std::string root = opt.out.empty() ? "runs/studies/fluidized_bed" : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   for (const Case* c : todo) {
@@ -203,4 +203,4 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
   return 0;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

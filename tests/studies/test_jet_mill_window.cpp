@@ -1,4 +1,4 @@
-// The jet mill study's figure window (scenarios/jet_mill/jet_mill_study.hpp) on the rows a real
+// The jet mill study's figure window (studies/jet_mill_study.hpp) on the rows a real
 // run wrote: cg4_p5bar's timeseries.csv and config.toml, kept in results/ (2026-11-25). Its driver
 // wrote a row every 131 exchange cycles (655 DEM steps of 0.7639 us: 0.50035 ms apart) and one at
 // its last step, 0.1300024 s for the end time 0.13 s. The window must end at that last row, or the
@@ -13,18 +13,18 @@
 #include "core/config.hpp"
 #include "helpers/cli.hpp"
 #include "scenarios/common/dem_driver.hpp"
-#include "scenarios/jet_mill/jet_mill_study.hpp"
+#include "studies/jet_mill_study.hpp"
 #include "tools/src/run_folder.hpp"
 #include "tools/src/window_stats.hpp"
 
 using lbdem::Config;
-using lbdem::scenarios::figure_window;
 using lbdem::scenarios::OutputSettings;
+using lbdem::studies::figure_window;
 using lbdem::tools::read_csv;
 using lbdem::tools::select_window;
 
 TEST_CASE("the jet mill study's window takes a run's first row from 0.07 s and its last row",
-          "[scenarios]") {
+          "[studies]") {
   const std::string dir = std::string(LBDEM_SOURCE_DIR) + "/results/jet_mill/cg4_p5bar";
   const auto table = read_csv(dir + "/timeseries.csv");
   const std::vector<double>& t = table.column("time_s");
@@ -52,7 +52,7 @@ TEST_CASE("the jet mill study's window takes a run's first row from 0.07 s and i
 // cg4_p5bar as results/ keeps it. Its mill_*.csv maps are the only copy: they must survive, and
 // the table takes its speeds from them when they cover the window, else leaves them empty.
 TEST_CASE("the jet mill study rebuilds its table from kept outputs without removing their maps",
-          "[scenarios]") {
+          "[studies]") {
   namespace fs = std::filesystem;
   const std::string src = std::string(LBDEM_SOURCE_DIR) + "/results/jet_mill/cg4_p5bar";
   const std::string root = lbdem::test::tmpdir("mill_kept"), dir = root + "/cg4_p5bar";
@@ -95,7 +95,7 @@ TEST_CASE("the jet mill study rebuilds its table from kept outputs without remov
 // read (a word where numbers belong): the script fails on them when it reads them, and succeeds
 // only if it does not. The other case is cg4_p5bar's kept outputs, drawn as usual.
 TEST_CASE("the jet mill figures leave out the maps of a case named by --no-maps",
-          "[scenarios][tools][slow]") {
+          "[studies][tools][slow]") {
   namespace fs = std::filesystem;
   const std::string python = LBDEM_PYTHON;
   if (python.empty()) {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/study_options.hpp"
+#include "studies/study_options.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 struct TorqueSummary {
   double peak = 0;                    // largest 0.01 s block mean in the first revolution [N m]
@@ -26,4 +26,4 @@ TorqueSummary summarize_torque(const std::vector<double>& t, const std::vector<d
 
 int run_rheometer_study(const StudyOptions& opt);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies

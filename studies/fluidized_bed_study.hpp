@@ -7,10 +7,10 @@
 // spectra (lbdem-compare-runs, tools/compare_runs.py), and a table (study.csv) of means with their
 // block-average standard errors, fluctuations, parcels across and high, and wall time per
 // simulated second.
-#include "scenarios/study_options.hpp"
+#include "studies/study_options.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::studies {
 
 int run_fluidized_bed_study(const StudyOptions& opt);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::studies
