@@ -47,13 +47,32 @@ int main(int argc, char** argv) {
                   "compare the cases already in the study folder; run and resume none");
   study
       ->add_option("--from", so.window_from,
-                   "start of the statistics window [s] (fluidized_bed; default: 0.05 s after the "
-                   "gas ramp)")
+                   "start of the statistics window [s] (fluidized_bed: default 0.05 s after the "
+                   "gas ramp; cg: default half the end time)")
       ->check(CLI::PositiveNumber);
   study
       ->add_option("--to", so.window_to,
-                   "end of the statistics window [s] (fluidized_bed; default: each case's end)")
+                   "end of the statistics window [s] (fluidized_bed, cg; default: each case's "
+                   "end)")
       ->check(CLI::PositiveNumber);
+  study->add_option("--config", so.config, "cg: the config to coarse-grain (TOML file)");
+  study
+      ->add_option("--levels", so.levels,
+                   "cg: size factors to run and compare, comma separated (the smallest is the "
+                   "reference)")
+      ->delimiter(',');
+  study
+      ->add_option("--observables", so.observables,
+                   "cg: timeseries.csv columns to compare (default: the scenario's: bed height "
+                   "and pressure drop, torque, or kinetic energy)")
+      ->delimiter(',');
+  study->add_option("--rule", so.rule,
+                    "cg: coarse_grain.rule of every level (default: the config's)");
+  study
+      ->add_option("--tolerance", so.tolerance,
+                   "cg: a resolved relative difference up to this is called close (default "
+                   "0.05)")
+      ->check(CLI::NonNegativeNumber);
   study->add_flag("--quick", so.quick,
                   "a short check of the whole chain at reduced size and end time (jet_mill)");
   try {

@@ -34,8 +34,12 @@ class InputError : public std::runtime_error {
       : std::runtime_error(format(key, value, problem, fix)),
         key_(std::move(key)),
         value_(std::move(value)),
-        problem_(std::move(problem)) {}
+        problem_(std::move(problem)),
+        fix_(std::move(fix)) {}
   const std::string& key() const { return key_; }
+  const std::string& value() const { return value_; }
+  const std::string& problem() const { return problem_; }
+  const std::string& fix() const { return fix_; }
   /// The same error with another fix (a caller that knows which changes pass its checks).
   InputError with_fix(std::string fix) const { return {key_, value_, problem_, std::move(fix)}; }
 
@@ -56,7 +60,7 @@ class InputError : public std::runtime_error {
   }
 
  private:
-  std::string key_, value_, problem_;
+  std::string key_, value_, problem_, fix_;
 };
 
 /// Renders a number the way a user would type it in a TOML file.

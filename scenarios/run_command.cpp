@@ -134,13 +134,13 @@ std::vector<std::string> scenario_names() {
   return names;
 }
 
-void read_as_scenario(const std::string& name, const Config& cfg) {
+std::vector<std::string> read_as_scenario(const std::string& name, const Config& cfg) {
   for (const auto& s : scenarios())
     if (s.name == name) {
       read_command_keys(cfg, name);
-      s.make(cfg);
+      const auto columns = s.make(cfg)->columns();
       cfg.check_unknown_keys();
-      return;
+      return columns;
     }
   throw InputError("scenario", name, "unknown scenario", "see ./lbdem run --list");
 }

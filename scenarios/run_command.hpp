@@ -21,8 +21,9 @@ int run_scenario(const RunOptions& opt);
 /// The scenarios' names, as `run --list` gives them.
 std::vector<std::string> scenario_names();
 /// Reads `cfg` as the run command would for scenario `name` (builds the scenario and discards
-/// it, then checks for unknown keys); InputError as for a run.
-void read_as_scenario(const std::string& name, const Config& cfg);
+/// it, then checks for unknown keys); InputError as for a run. Returns the run's timeseries.csv
+/// columns (Scenario::columns).
+std::vector<std::string> read_as_scenario(const std::string& name, const Config& cfg);
 /// The `config` verb: prints the generated key reference (scenarios/config_reference.hpp).
 int print_config_reference();
 

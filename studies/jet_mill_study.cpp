@@ -148,7 +148,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
     throw InputError("--end-time", fmt(opt.end_time), "--quick sets its own end time",
                      "give --quick or --end-time, not both");
   const std::string root =
-      opt.out.empty() ? (opt.quick ? "runs/studies/jet_mill_quick" : "runs/studies/jet_mill") : opt.out;
+      opt.out.empty() ? (opt.quick ? "runs/studies/jet_mill_quick" : "runs/studies/jet_mill")
+                      : opt.out;
   fs::create_directories(root);
   const std::string src = LBDEM_SOURCE_DIR;
   // The feed starts after the gas spin-up: study time 0 is inflow.start of the presets.

@@ -1,5 +1,6 @@
 #pragma once
 // Options of `./lbdem study NAME`.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,13 @@ struct StudyOptions {
   bool list = false, no_plots = false;
   bool quick = false;   // the study's short check form (studies that have one)
   bool no_run = false;  // compare the cases already in the folder; run and resume none
-  double window_from = 0, window_to = 0;  // > 0: the statistics window [s] (fluidized_bed)
+  double window_from = 0, window_to = 0;  // > 0: the statistics window [s] (fluidized_bed, cg)
+  // The cg study: the user's config, its size factors, the timeseries columns compared, the
+  // scaling rule of every level (empty: the config's) and the relative difference called close.
+  std::string config, rule;
+  std::vector<double> levels;
+  std::vector<std::string> observables;
+  double tolerance = std::nan("");  // NaN: not given (the cg study takes 0.05)
 };
 
 }  // namespace lbdem::studies

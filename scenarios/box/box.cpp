@@ -442,7 +442,7 @@ void BoxScenario::before_step(dem::DemSolver& s) {
   }
 }
 
-std::vector<std::string> BoxScenario::columns() const {
+std::vector<std::string> BoxScenario::box_columns() const {
   std::vector<std::string> c = wall_columns_;
   c.push_back("mass_inserted_kg");
   if (gas_) {
@@ -455,6 +455,13 @@ std::vector<std::string> BoxScenario::columns() const {
           "mean_eps_at_particles", "eps_clipped_cells", "gas_work_on_particles_J"})
       c.emplace_back(name);
   c.insert(c.end(), extra_.columns.begin(), extra_.columns.end());
+  return c;
+}
+
+std::vector<std::string> BoxScenario::columns() const {
+  std::vector<std::string> c = driver_columns();
+  const auto own = box_columns();
+  c.insert(c.end(), own.begin(), own.end());
   return c;
 }
 
@@ -517,7 +524,7 @@ int BoxScenario::run(const RunContext& ctx) {
     }
   };
   hooks.unfinished = [this](const dem::DemSolver& s) { return gas_behind(s); };
-  hooks.extra_columns = columns();
+  hooks.extra_columns = box_columns();
   hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
   hooks.save = [this](H5Out& f) {
     std::ostringstream os;

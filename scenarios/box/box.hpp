@@ -60,8 +60,10 @@ class BoxScenario : public Scenario {
   const coupling::ExchangeReport& exchange_report() const { return report_; }
   /// DEM steps at which every solver stands at the same time (output and checkpoint instants).
   std::int64_t cycle() const;
-  /// Columns and values the box writes to timeseries.csv (public for scenarios built on it).
-  std::vector<std::string> columns() const;
+  /// Columns and values the box adds to timeseries.csv after the driver's (public for scenarios
+  /// built on it).
+  std::vector<std::string> box_columns() const;
+  std::vector<std::string> columns() const override;
   std::vector<double> values(const dem::DemSolver& s) const;
   /// Extra columns from a scenario built on the box (fluidized bed): called at every row.
   struct Extra {

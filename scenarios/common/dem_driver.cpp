@@ -304,6 +304,10 @@ const std::vector<std::string> kColumns = {"time_s",
                                            "neighbour_rebuilds"};
 }  // namespace
 
+const std::vector<std::string>& driver_columns() {
+  return kColumns;
+}
+
 void DemDriver::write_row(double stored0, bool regular) {
   const auto e = solver_.energy();
   // Collisions begun per second since the previous row.

@@ -146,6 +146,10 @@ class DemDriver {
   RunCostMeter cost_;
 };
 
+/// The driver's own timeseries.csv columns, which every scenario's columns begin with (a scenario
+/// adds DriverHooks::extra_columns after them).
+const std::vector<std::string>& driver_columns();
+
 /// Derived DEM numbers for the start-up banner. The radius range counts a feed's
 /// radii (feed_r_min > 0) with the particles present at the start; `watch` adds the watchdog's
 /// limits.

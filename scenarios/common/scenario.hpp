@@ -4,6 +4,8 @@
 // it composes solvers and is not a subclass of them.
 #include <array>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "core/log.hpp"
 #include "scenarios/common/dem_driver.hpp"
@@ -20,6 +22,9 @@ class Scenario {
   /// The gas lattice's interior cells per axis (zeros without gas): recorded in each checkpoint,
   /// which a resume must match (checkpoint_check.hpp).
   virtual std::array<std::int64_t, 3> lattice() const { return {0, 0, 0}; }
+  /// The columns of the run's timeseries.csv, in order (SI names): the DEM driver's, then the
+  /// scenario's own. Known before the run, so that a study can check the names it will read.
+  virtual std::vector<std::string> columns() const = 0;
 };
 
 }  // namespace lbdem::scenarios

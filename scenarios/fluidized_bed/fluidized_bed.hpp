@@ -26,6 +26,7 @@ class FluidizedBedScenario : public Scenario {
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
   std::array<std::int64_t, 3> lattice() const override { return box_.lattice(); }
+  std::vector<std::string> columns() const override { return box_.columns(); }
   BoxScenario& box() { return box_; }
   /// The two outputs at the solvers' current state.
   double bed_height() const;

@@ -34,6 +34,7 @@ class JetMillScenario : public Scenario {
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
   std::array<std::int64_t, 3> lattice() const override { return box_.lattice(); }
+  std::vector<std::string> columns() const override { return box_.columns(); }
   BoxScenario& box() { return box_; }
   const JetMillGeometry& geometry() const { return geometry_; }
   const JetSources& sources() const { return sources_; }

@@ -227,10 +227,21 @@ void RheometerScenario::banner(Log& log) const {
              step_.scales.rayleigh_time, step_.scales.where, 0.0, 0.0, &w);
 }
 
+namespace {
+const std::vector<std::string> kRheometerColumns = {"torque_Nm", "cup_torque_Nm", "floor_torque_Nm",
+                                                    "particle_angular_momentum_Nms",
+                                                    "impeller_angle_rad"};
+}  // namespace
+
+std::vector<std::string> RheometerScenario::columns() const {
+  std::vector<std::string> c = driver_columns();
+  c.insert(c.end(), kRheometerColumns.begin(), kRheometerColumns.end());
+  return c;
+}
+
 int RheometerScenario::run(const RunContext& ctx) {
   DriverHooks hooks;
-  hooks.extra_columns = {"torque_Nm", "cup_torque_Nm", "floor_torque_Nm",
-                         "particle_angular_momentum_Nms", "impeller_angle_rad"};
+  hooks.extra_columns = kRheometerColumns;
   hooks.extra_values = [this](const dem::DemSolver& s) {
     const auto& w = s.walls()[impeller_walls_.front()];
     double angle = 0;

@@ -38,6 +38,7 @@ class RheometerScenario : public Scenario {
   void banner(Log& log) const override;
   int run(const RunContext& ctx) override;
   const OutputSettings& output() const override { return out_; }
+  std::vector<std::string> columns() const override;
   dem::DemSolver& solver() { return *solver_; }
 
   /// Drive torque about +z [N m]: minus the particles' torque on blades and shaft.
