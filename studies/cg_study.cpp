@@ -13,8 +13,8 @@
 #include "scenarios/common/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/run_comparison.hpp"
 #include "tools/src/run_folder.hpp"
-#include "tools/src/window_stats.hpp"
 
 namespace lbdem::studies {
 
@@ -74,26 +74,16 @@ void check_config(const Config& cfg) {
                      "fill by mass ([[fill]] with mass = M [kg]) for a coarse-graining study");
 }
 
-}  // namespace
-
-CgStats cg_stats(const std::vector<double>& x) {
-  CgStats s;
-  const tools::Moments m = tools::moments(x);
-  s.samples = m.n;
-  s.mean = m.mean;
-  s.fluctuation = m.std;
-  if (x.size() < 2 * tools::kMinBlocks) {
-    s.mean_err = s.fluctuation_err = std::nan("");
-    s.plateau = false;
-    return s;
-  }
-  const tools::BlockError e = tools::auto_block_error(x);
-  const tools::BlockError f = tools::fluctuation_error(x);
-  s.mean_err = e.stderr_mean;
-  s.fluctuation_err = f.stderr_mean;
-  s.plateau = e.plateau && f.plateau;
-  return s;
+CgStats summary(const tools::RunStats& r) {
+  return {r.m.n,
+          r.m.mean,
+          r.err.stderr_mean,
+          r.m.std,
+          r.std_err.stderr_mean,
+          r.err.plateau && r.std_err.plateau};
 }
+
+}  // namespace
 
 CgDifference cg_difference(double value, double err, double ref, double ref_err, double tolerance) {
   CgDifference d;
@@ -234,29 +224,27 @@ int run_cg_study(const StudyOptions& opt) {
     const Level* level;
     std::string dir;
     double simulated = 0;
-    std::vector<CgStats> stats;  // per observable; empty: not enough rows
+    std::vector<tools::RunStats> stats;  // per observable; empty: not enough rows
+    std::string why;                     // why there are none
   };
   std::vector<Result> results;
   std::vector<std::size_t> finest_first = order;
   std::reverse(finest_first.begin(), finest_first.end());
   for (const std::size_t k : finest_first) {
-    Result r{&levels[k], root + "/" + levels[k].name, 0, {}};
+    Result r{&levels[k], root + "/" + levels[k].name, 0, {}, ""};
     if (!fs::exists(r.dir + "/timeseries.csv")) continue;
-    const tools::Table t = tools::read_csv(r.dir + "/timeseries.csv");
-    if (t.rows() == 0 || !t.has("time_s")) continue;
-    const auto& time = t.column("time_s");
-    r.simulated = time.back();
-    const tools::IndexRange w = tools::select_window(time, from, to);
-    if (w.size() >= 2)
-      for (const auto& o : observables) {
-        if (!t.has(o)) {
-          r.stats.clear();
-          break;
-        }
-        const auto& col = t.column(o);
-        r.stats.push_back(cg_stats(std::vector<double>(col.begin() + std::ptrdiff_t(w.begin),
-                                                       col.begin() + std::ptrdiff_t(w.end))));
-      }
+    const tools::RunFolder run = tools::RunFolder::open(r.dir);
+    if (run.series.rows() == 0) continue;
+    r.simulated = run.time().back();
+    // The same statistics as lbdem-compare-runs (rows resampled where unevenly spaced); a window
+    // with too few rows, or an observable the run lacks, leaves the level without statistics.
+    try {
+      for (const auto& o : observables)
+        r.stats.push_back(tools::analyse_run(run, r.level->name, {o, from, to}));
+    } catch (const tools::ToolError& e) {
+      r.stats.clear();
+      r.why = e.what();
+    }
     results.push_back(std::move(r));
   }
   const Result* ref = nullptr;
@@ -308,17 +296,17 @@ int run_cg_study(const StudyOptions& opt) {
             "mean vs ref (rel, z)          fluctuation vs ref (rel, z)\n";
     for (const auto& r : results) {
       if (r.stats.empty()) {
-        text << r.level->name << "  (fewer than 2 rows in the window)\n";
+        text << r.level->name << "  (no statistics: " << r.why << ")\n";
         continue;
       }
-      const CgStats& s = r.stats[o];
+      const CgStats s = summary(r.stats[o]);
       ob_csv << observables[o] << "," << r.level->name << "," << num(r.level->l, "%g") << ","
              << num(from, "%g") << "," << num(to, "%g") << "," << s.samples << "," << num(s.mean)
              << "," << num(s.mean_err) << "," << num(s.fluctuation) << "," << num(s.fluctuation_err)
              << "," << (s.plateau ? "yes" : "no");
       std::string vs_mean = "reference", vs_fluct = "reference";
       if (ref && &r != ref) {
-        const CgStats& q = ref->stats[o];
+        const CgStats q = summary(ref->stats[o]);
         const CgDifference dm = cg_difference(s.mean, s.mean_err, q.mean, q.mean_err, tolerance);
         const CgDifference df = cg_difference(s.fluctuation, s.fluctuation_err, q.fluctuation,
                                               q.fluctuation_err, tolerance);

@@ -20,9 +20,6 @@ struct CgStats {
   bool plateau = true;  // both errors reached a blocking plateau (else they may be too small)
 };
 
-/// The statistics of `x` (samples in the window, in time order).
-CgStats cg_stats(const std::vector<double>& x);
-
 /// A level's value against the reference's: the difference, relative to the reference's value,
 /// in units of the combined standard error, and the verdict: "same" (|z| <= kCgSigma: no
 /// difference the statistics can resolve), "close" (resolved, but within `tolerance` of the

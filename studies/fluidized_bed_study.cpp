@@ -15,6 +15,7 @@
 #include "core/h5.hpp"
 #include "core/types.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/run_comparison.hpp"
 
 namespace lbdem::studies {
 
@@ -52,43 +53,6 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
-// lbdem-compare-runs' least number of samples in a window (tools/src/compare_runs.cpp).
-constexpr std::size_t kMinWindowRows = 16;
-
-// Rows of a timeseries.csv whose time lies in [from, to].
-std::size_t rows_in_window(const std::string& csv, double from, double to) {
-  std::ifstream f(csv);
-  std::string line;
-  std::getline(f, line);  // header
-  std::size_t n = 0;
-  while (std::getline(f, line)) {
-    try {
-      const double t = std::stod(line.substr(0, line.find(',')));
-      if (t >= from && t <= to) ++n;
-    } catch (const std::exception&) {
-      // a partly written last row of a running case
-    }
-  }
-  return n;
-}
-
-// mean, stderr_mean, std and stderr_std of each run folder in a compare-runs stats file.
-std::map<std::string, std::array<double, 4>> read_stats(const std::string& path) {
-  std::map<std::string, std::array<double, 4>> out;
-  std::ifstream f(path);
-  std::string line;
-  std::getline(f, line);
-  while (std::getline(f, line)) {
-    std::vector<std::string> v;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) v.push_back(c);
-    if (v.size() < 18) continue;
-    out[fs::path(v[0]).filename().string()] = {std::stod(v[8]), std::stod(v[9]), std::stod(v[10]),
-                                               std::stod(v[17])};
-  }
-  return out;
-}
-
 }  // namespace
 
 int run_fluidized_bed_study(const StudyOptions& opt) {
@@ -122,38 +86,41 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
                : std::max(from, inlet.get("ramp_start", 0.0) + inlet.get("ramp_time", 0.0) + 0.05);
     present.push_back(&c);
   }
-  // A case with fewer rows in the window than lbdem-compare-runs needs (a CG 1 run that has not
-  // got far enough yet) has nothing to compare: it stays in the table without statistics.
-  std::vector<const Case*> compared;
-  for (const Case* c : present) {
-    const std::size_t rows = rows_in_window(root + "/" + c->name + "/timeseries.csv", from,
-                                            opt.window_to > 0 ? opt.window_to : 1e300);
-    if (rows >= kMinWindowRows)
-      compared.push_back(c);
-    else
-      std::cerr << "fluidized_bed study: " << c->name << " has " << rows << " rows from " << from
-                << " s (" << kMinWindowRows << " needed): in the table without statistics\n";
-  }
-  const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
+  // A case with fewer rows in the window than the comparison needs (a CG 1 run that has not got
+  // far enough yet) has nothing to compare: it stays in the table without statistics.
   const std::string python = LBDEM_PYTHON;
   const std::array<std::string, 2> columns = {"bed_height_m", "pressure_drop_Pa"};
-  std::array<std::map<std::string, std::array<double, 4>>, 2> stats;
-  for (std::size_t k = 0; k < columns.size() && !compared.empty(); ++k) {
-    std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column " + columns[k] +
-                      " --from " + fmt(from, "%.17g") +
-                      (opt.window_to > 0 ? " --to " + fmt(opt.window_to, "%.17g") : std::string());
-    for (const Case* c : compared) cmd += " '" + root + "/" + c->name + "' --label " + c->name;
-    const std::string prefix = root + "/" + columns[k];
-    cmd += " --out '" + prefix + "' > '" + prefix + "_table.txt'";
-    if (std::system(cmd.c_str()) != 0) {
-      std::cerr << "warning: lbdem-compare-runs failed (" << cmd
-                << "); a case may not have reached the fluidized window (t > " << from << " s)\n";
+  std::array<std::map<std::string, tools::RunStats>, 2> stats;
+  std::array<std::vector<tools::RunStats>, 2> compared;
+  for (const Case* c : present) {
+    const tools::RunFolder run = tools::RunFolder::open(root + "/" + c->name);
+    const double to = opt.window_to > 0 ? opt.window_to : 1e300;
+    const std::size_t rows = tools::select_window(run.time(), from, to).size();
+    if (rows < tools::kMinWindowSamples) {
+      std::cerr << "fluidized_bed study: " << c->name << " has " << rows << " rows from " << from
+                << " s (" << tools::kMinWindowSamples
+                << " needed): in the table without statistics\n";
       continue;
     }
-    stats[k] = read_stats(prefix + "_stats.csv");
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      try {
+        const tools::RunStats r = tools::analyse_run(run, c->name, {columns[k], from, to});
+        stats[k][c->name] = r;
+        compared[k].push_back(r);
+      } catch (const tools::ToolError& e) {
+        std::cerr << "warning: " << c->name << ": " << e.what() << "\n";
+      }
+    }
+  }
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    if (compared[k].empty()) continue;
+    const std::string prefix = root + "/" + columns[k];
+    tools::write_comparison(prefix, columns[k], compared[k]);
+    write_file_atomic(prefix + "_table.txt", tools::comparison_table(columns[k], compared[k]));
     if (!opt.no_plots && !python.empty()) {
-      const std::string plot =
-          "'" + python + "' '" + src + "/tools/compare_runs.py' '" + prefix + "' > /dev/null";
+      const std::string plot = shell_quoted(python) + " " +
+                               shell_quoted(src + "/tools/compare_runs.py") + " " +
+                               shell_quoted(prefix) + " > /dev/null";
       if (std::system(plot.c_str()) != 0)
         std::cerr << "warning: the plot failed (" << plot << ")\n";
       else
@@ -186,8 +153,8 @@ int run_fluidized_bed_study(const StudyOptions& opt) {
       if (it == stats[k].end())
         table << ",,,,";
       else
-        table << "," << fmt(it->second[0]) << "," << fmt(it->second[1]) << "," << fmt(it->second[2])
-              << "," << fmt(it->second[3]);
+        table << "," << fmt(it->second.m.mean) << "," << fmt(it->second.err.stderr_mean) << ","
+              << fmt(it->second.m.std) << "," << fmt(it->second.std_err.stderr_mean);
     }
     table << "," << fmt(mass * 9.81 * (1 - 1.2 / rho) / area) << ","
           << (wall > 0 && timed > 0 ? fmt(wall / timed) : std::string(""));

@@ -19,6 +19,7 @@
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/run_comparison.hpp"
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
 
 namespace lbdem::studies {
@@ -80,52 +81,45 @@ std::string fmt(double v, const char* f = "%.4g") {
   return b;
 }
 
-// Rows of a CSV with a header, each a map from column name to its text.
-std::vector<std::map<std::string, std::string>> read_rows(const std::string& path) {
-  std::vector<std::map<std::string, std::string>> rows;
-  std::ifstream f(path);
-  std::string line;
-  if (!std::getline(f, line)) return rows;
-  std::vector<std::string> names;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
-  while (std::getline(f, line)) {
-    std::map<std::string, std::string> row;
-    std::stringstream ls(line);
-    std::size_t k = 0;
-    for (std::string c; std::getline(ls, c, ',') && k < names.size(); ++k) row[names[k]] = c;
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-double number(const std::map<std::string, std::string>& row, const std::string& key) {
-  const auto it = row.find(key);
-  if (it == row.end() || it->second.empty()) return std::nan("");
+// A table the tools wrote (with its text cells), or an empty one where there is no such file.
+tools::Table table_or_empty(const std::string& path) {
+  if (!fs::exists(path)) return {};
   try {
-    return std::stod(it->second);
-  } catch (const std::exception&) {
-    return std::nan("");
+    return tools::read_csv(path, true);
+  } catch (const tools::ToolError&) {
+    return {};
   }
 }
 
-// The row of `rows` whose run_dir ends in /name.
-const std::map<std::string, std::string>* row_of(
-    const std::vector<std::map<std::string, std::string>>& rows, const std::string& name) {
-  for (const auto& r : rows) {
-    const auto it = r.find("run_dir");
-    if (it != r.end() && fs::path(it->second).filename() == name) return &r;
+// One row of such a table, or none: its numbers by column name, NaN where absent.
+struct Row {
+  const tools::Table* table = nullptr;
+  std::size_t row = 0;
+  double operator()(const char* key) const {
+    return table ? table->number(key, row) : std::nan("");
   }
-  return nullptr;
+};
+
+// The first row of `t`, if it has one.
+Row first_row(const tools::Table& t) {
+  return t.rows() > 0 ? Row{&t, 0} : Row{};
+}
+
+// The row of `t` whose run_dir ends in /name.
+Row row_of(const tools::Table& t, const std::string& name) {
+  if (!t.has("run_dir") || t.text.empty()) return {};
+  for (std::size_t r = 0; r < t.rows(); ++r)
+    if (fs::path(t.cell("run_dir", r)).filename() == name) return {&t, r};
+  return {};
 }
 
 // The last value of a timeseries column and the largest value of another.
 std::pair<double, double> last_and_max(const std::string& csv, const std::string& last_col,
                                        const std::string& max_col) {
-  const auto rows = read_rows(csv);
+  const tools::Table t = table_or_empty(csv);
   double last = std::nan(""), mx = std::nan("");
-  for (const auto& r : rows) {
-    const double a = number(r, last_col), b = number(r, max_col);
+  for (std::size_t r = 0; r < t.rows(); ++r) {
+    const double a = t.number(last_col, r), b = t.number(max_col, r);
     if (std::isfinite(a)) last = a;
     if (std::isfinite(b)) mx = std::isfinite(mx) ? std::max(mx, b) : b;
   }
@@ -238,11 +232,11 @@ int run_jet_mill_study(const StudyOptions& opt) {
     // and their last within 1.5 intervals and a row interval before its (padded) end (the run may
     // stop just before the next snapshot, and snapshots fall on whole steps, a little late).
     if (!fs::exists(dir + "/particles.h5")) {
-      const auto kept = read_rows(dir + "/mill_summary.csv");
+      const tools::Table kept_table = table_or_empty(dir + "/mill_summary.csv");
+      const Row kept = first_row(kept_table);
       const OutputSettings out = OutputSettings::from(cfg.section("run"), cfg.section("output"));
       const double tol = 1e-8 * std::max(std::abs(from), std::abs(to));
-      const double a = kept.empty() ? std::nan("") : number(kept.front(), "from_s");
-      const double b = kept.empty() ? std::nan("") : number(kept.front(), "to_s");
+      const double a = kept("from_s"), b = kept("to_s");
       const bool covers = a >= from - tol && a <= from + out.snapshot_interval + tol &&
                           b <= to + tol &&
                           b >= to - 1.5 * out.snapshot_interval - out.interval - tol;
@@ -278,10 +272,17 @@ int run_jet_mill_study(const StudyOptions& opt) {
                 shell_quoted(root + "/collisions.csv") + " > " +
                 shell_quoted(root + "/collisions_table.txt"),
             "lbdem-collision-stats");
-  system_ok(shell_quoted((bin / "lbdem-compare-runs").string()) + " --column kinetic_energy_J" +
-                runs + window + " --out " + shell_quoted(root + "/kinetic_energy") + " > " +
-                shell_quoted(root + "/kinetic_energy_table.txt"),
-            "lbdem-compare-runs");
+  try {
+    std::vector<tools::RunStats> ke;
+    for (const Case* c : present)
+      ke.push_back(tools::analyse_run(tools::RunFolder::open(root + "/" + c->name), c->name,
+                                      {"kinetic_energy_J", from, to}));
+    tools::write_comparison(root + "/kinetic_energy", "kinetic_energy_J", ke);
+    write_file_atomic(root + "/kinetic_energy_table.txt",
+                      tools::comparison_table("kinetic_energy_J", ke));
+  } catch (const tools::ToolError& e) {
+    std::cerr << "warning: no kinetic-energy comparison: " << e.what() << "\n";
+  }
   const std::string python = LBDEM_PYTHON;
   if (!opt.no_plots && !python.empty()) {
     std::string plot =
@@ -299,8 +300,8 @@ int run_jet_mill_study(const StudyOptions& opt) {
   }
 
   // The table: one row per case.
-  const auto coll = read_rows(root + "/collisions.csv");
-  const auto ke = read_rows(root + "/kinetic_energy_stats.csv");
+  const tools::Table coll = table_or_empty(root + "/collisions.csv");
+  const tools::Table ke = table_or_empty(root + "/kinetic_energy_stats.csv");
   // Each case is compared with CG 1 of its own series, named after "cgN": the scaled cells ("",
   // and cg10_tc30, cg10 with a shorter DEM step), "_fixed", "_p5bar" (and cg10_p5bar_tc30),
   // "_fixed_p5bar".
@@ -318,22 +319,17 @@ int run_jet_mill_study(const StudyOptions& opt) {
   constexpr std::size_t kCompared = 6;
   std::map<std::string, std::array<double, kCompared>> figures;
   for (const Case* c : present) {
-    const auto maps = no_maps.count(c->name)
-                          ? std::vector<std::map<std::string, std::string>>{}
-                          : read_rows(root + "/" + c->name + "/mill_summary.csv");
-    const auto* cr = row_of(coll, c->name);
-    const auto* kr = row_of(ke, c->name);
-    const auto get = [](const std::map<std::string, std::string>* r, const char* k) {
-      return r ? number(*r, k) : std::nan("");
-    };
-    const double span = get(cr, "t_to_s") - get(cr, "t_from_s");
-    figures[c->name] = {
-        get(kr, "mean"),
-        maps.empty() ? std::nan("") : number(maps.front(), "mean_speed_m_per_s"),
-        maps.empty() ? std::nan("") : number(maps.front(), "jet_mean_speed_m_per_s"),
-        get(cr, "freq_pp_per_original_per_s"),
-        get(cr, "dissipated_J"),
-        get(cr, "dissipated_J") * dem_dt[c->name] / span};
+    const tools::Table maps_table =
+        no_maps.count(c->name) ? tools::Table{}
+                               : table_or_empty(root + "/" + c->name + "/mill_summary.csv");
+    const Row maps = first_row(maps_table), cr = row_of(coll, c->name), kr = row_of(ke, c->name);
+    const double span = cr("t_to_s") - cr("t_from_s");
+    figures[c->name] = {kr("mean"),
+                        maps("mean_speed_m_per_s"),
+                        maps("jet_mean_speed_m_per_s"),
+                        cr("freq_pp_per_original_per_s"),
+                        cr("dissipated_J"),
+                        cr("dissipated_J") * dem_dt[c->name] / span};
   }
   std::map<std::string, double> wall_ref;
   double rate_prev = std::nan("");
@@ -355,19 +351,15 @@ int run_jet_mill_study(const StudyOptions& opt) {
     const std::string dir = root + "/" + c->name;
     const auto [removed, parcels] =
         last_and_max(dir + "/timeseries.csv", "mass_removed_kg", "particles");
-    const auto maps = no_maps.count(c->name) ? std::vector<std::map<std::string, std::string>>{}
-                                             : read_rows(dir + "/mill_summary.csv");
-    const auto* cr = row_of(coll, c->name);
-    const auto* kr = row_of(ke, c->name);
-    const auto get = [](const std::map<std::string, std::string>* r, const char* k) {
-      return r ? number(*r, k) : std::nan("");
-    };
+    const tools::Table maps_table =
+        no_maps.count(c->name) ? tools::Table{} : table_or_empty(dir + "/mill_summary.csv");
+    const Row maps = first_row(maps_table), cr = row_of(coll, c->name), kr = row_of(ke, c->name);
     const auto [wall, timed] = read_timing(dir);
     const double wps = wall > 0 && timed > 0 ? wall / timed : std::nan("");
     if (c->n == 1) wall_ref[c->name] = wps;
     const std::string ref = series_ref(c->name);
     const double wall_cg1 = wall_ref.count(ref) ? wall_ref[ref] : std::nan("");
-    const double rate_pp = get(cr, "rate_pp_per_s");
+    const double rate_pp = cr("rate_pp_per_s");
     // Change of the particle-particle collision rate per doubling of n from the previous case
     // (the study reports about -60 %): (rate / rate_prev)^(1 / log2(n / n_prev)) - 1.
     // Within a series only (a partly run series may sit next to another in `present`).
@@ -376,22 +368,19 @@ int run_jet_mill_study(const StudyOptions& opt) {
             ? std::pow(rate_pp / rate_prev, 1.0 / std::log2(double(c->n) / n_prev)) - 1
             : std::nan("");
     rate_prev = rate_pp, n_prev = c->n, series_prev = ref;
-    const double span = get(cr, "t_to_s") - get(cr, "t_from_s");
+    const double span = cr("t_to_s") - cr("t_from_s");
     table << c->name << "," << c->n << "," << fmt(std::cbrt(double(c->n))) << ","
           << fmt(parcels, "%.0f") << "," << fmt(from - spin_up) << "," << fmt(end - spin_up) << ","
-          << fmt(last_time(dir + "/timeseries.csv") - spin_up) << "," << fmt(get(kr, "mean")) << ","
-          << fmt(get(kr, "stderr_mean")) << ","
-          << fmt(maps.empty() ? std::nan("") : number(maps.front(), "mean_speed_m_per_s")) << ","
-          << fmt(maps.empty() ? std::nan("") : number(maps.front(), "jet_mean_speed_m_per_s"))
-          << "," << fmt(rate_pp) << "," << fmt(get(cr, "rate_pw_per_s")) << ","
-          << fmt(get(cr, "freq_pp_per_original_per_s")) << ","
-          << fmt(get(cr, "freq_pw_per_original_per_s")) << "," << fmt(per_doubling) << ","
-          << fmt(get(cr, "dissipated_J")) << "," << fmt(get(cr, "dissipated_normal_damping_J"))
-          << "," << fmt(get(cr, "dissipated_tangential_damping_J")) << ","
-          << fmt(get(cr, "dissipated_sliding_J")) << "," << fmt(get(cr, "dissipated_rolling_J"))
-          << "," << fmt(get(cr, "dissipation_rate_W")) << ","
-          << fmt(get(cr, "dissipated_J") * dem_dt[c->name] / span) << ","
-          << fmt(get(cr, "dissipated_per_kg_J_per_kg")) << "," << fmt(removed);
+          << fmt(last_time(dir + "/timeseries.csv") - spin_up) << "," << fmt(kr("mean")) << ","
+          << fmt(kr("stderr_mean")) << "," << fmt(maps("mean_speed_m_per_s")) << ","
+          << fmt(maps("jet_mean_speed_m_per_s")) << "," << fmt(rate_pp) << ","
+          << fmt(cr("rate_pw_per_s")) << "," << fmt(cr("freq_pp_per_original_per_s")) << ","
+          << fmt(cr("freq_pw_per_original_per_s")) << "," << fmt(per_doubling) << ","
+          << fmt(cr("dissipated_J")) << "," << fmt(cr("dissipated_normal_damping_J")) << ","
+          << fmt(cr("dissipated_tangential_damping_J")) << "," << fmt(cr("dissipated_sliding_J"))
+          << "," << fmt(cr("dissipated_rolling_J")) << "," << fmt(cr("dissipation_rate_W")) << ","
+          << fmt(cr("dissipated_J") * dem_dt[c->name] / span) << ","
+          << fmt(cr("dissipated_per_kg_J_per_kg")) << "," << fmt(removed);
     const auto own = figures[c->name];
     const auto ref_fig = figures.find(ref);
     for (std::size_t k = 0; k < kCompared; ++k)

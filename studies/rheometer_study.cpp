@@ -16,6 +16,7 @@
 #include "core/h5.hpp"
 #include "core/types.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/run_comparison.hpp"
 #include "scenarios/run_command.hpp"
 
 namespace lbdem::studies {
@@ -73,34 +74,6 @@ const std::vector<Case>& cases() {
       {"cg2_tall", "cg2", "stiffness_only", 2, {"rheometer.blade_height=0.02"}, "blade 20 mm"},
   };
   return c;
-}
-
-struct Series {
-  std::vector<double> t, torque;
-};
-
-Series read_torque(const std::string& csv) {
-  std::ifstream f(csv);
-  std::string line;
-  Series s;
-  if (!std::getline(f, line)) return s;
-  std::vector<std::string> cols;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) cols.push_back(c);
-  const auto at = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-  };
-  const std::size_t it = at("time_s"), iq = at("torque_Nm");
-  if (it == cols.size() || iq == cols.size()) return s;
-  while (std::getline(f, line)) {
-    std::stringstream ls(line);
-    std::string v;
-    for (std::size_t k = 0; std::getline(ls, v, ','); ++k) {
-      if (k == it) s.t.push_back(std::stod(v));
-      if (k == iq) s.torque.push_back(std::stod(v));
-    }
-  }
-  return s;
 }
 
 std::string fmt(double v, const char* f = "%.4g") {
@@ -175,11 +148,13 @@ int run_rheometer_study(const StudyOptions& opt) {
     const std::string dir = root + "/" + c->name;
     if (!fs::exists(dir + "/config.toml") || !fs::exists(dir + "/timeseries.csv")) continue;
     const Config cfg = Config::from_file(dir + "/config.toml");
-    const Series s = read_torque(dir + "/timeseries.csv");
+    const tools::Table s = tools::read_csv(dir + "/timeseries.csv");
+    if (!s.has("time_s") || !s.has("torque_Nm")) continue;
     const double start = cfg.section("rheometer").get("start", 0.2);
     const double rpm = cfg.section("rheometer").get("rpm", 600.0);
-    const TorqueSummary ts = summarize_torque(s.t, s.torque, start, rpm);
-    const double simulated = s.t.empty() ? 0.0 : s.t.back();
+    const TorqueSummary ts =
+        summarize_torque(s.column("time_s"), s.column("torque_Nm"), start, rpm);
+    const double simulated = s.rows() == 0 ? 0.0 : s.column("time_s").back();
     const auto [wall, timed] = read_timing(dir);
     const double l = c->l;
     const double gap = cfg.section("rheometer").get("cup_radius", 0.025) -
@@ -205,26 +180,31 @@ int run_rheometer_study(const StudyOptions& opt) {
   }
   write_file_atomic(root + "/study.csv", table.str());
   // Torque overlay and spectra (tools/): the steady window of every case, labelled by case name.
-  const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string python = LBDEM_PYTHON;
-  if (!opt.no_plots && fs::exists(bin / "lbdem-compare-runs") && !python.empty()) {
-    std::string cmd = "'" + (bin / "lbdem-compare-runs").string() + "' --column torque_Nm";
+  if (!opt.no_plots && !python.empty()) {
     double from = 0;
-    std::string labels;
     for (const Case* c : todo) {
-      cmd += " '" + root + "/" + c->name + "'";
-      labels += " --label '" + c->name + "'";
       const Config cfg = Config::from_file(root + "/" + c->name + "/config.toml");
       from = std::max(from, cfg.section("rheometer").get("start", 0.2) +
                                 60.0 / std::abs(cfg.section("rheometer").get("rpm", 600.0)));
     }
-    cmd += " --from " + fmt(from, "%.17g") + labels + " --out '" + root + "/torque' > '" + root +
-           "/torque_stats.txt' && '" + python + "' '" + src + "/tools/compare_runs.py' '" + root +
-           "/torque' > /dev/null";
-    if (std::system(cmd.c_str()) != 0)
-      std::cerr << "warning: the torque plot failed (" << cmd << ")\n";
-    else
-      std::cout << "torque plot: " << fs::absolute(root + "/torque.png").string() << "\n";
+    try {
+      std::vector<tools::RunStats> res;
+      for (const Case* c : todo)
+        res.push_back(tools::analyse_run(tools::RunFolder::open(root + "/" + c->name), c->name,
+                                         {"torque_Nm", from}));
+      tools::write_comparison(root + "/torque", "torque_Nm", res);
+      write_file_atomic(root + "/torque_stats.txt", tools::comparison_table("torque_Nm", res));
+      const std::string plot = shell_quoted(python) + " " +
+                               shell_quoted(src + "/tools/compare_runs.py") + " " +
+                               shell_quoted(root + "/torque") + " > /dev/null";
+      if (std::system(plot.c_str()) != 0)
+        std::cerr << "warning: the torque plot failed (" << plot << ")\n";
+      else
+        std::cout << "torque plot: " << fs::absolute(root + "/torque.png").string() << "\n";
+    } catch (const tools::ToolError& e) {
+      std::cerr << "warning: no torque comparison: " << e.what() << "\n";
+    }
   }
   std::cout << "rheometer study table: " << fs::absolute(root + "/study.csv").string() << "\n"
             << table.str();

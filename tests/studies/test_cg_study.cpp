@@ -1,13 +1,12 @@
-// The coarse-graining study of any config (studies/cg_study.hpp): its statistics against noise of
-// known variance, its verdicts on constructed differences, and the whole chain on a small box at
-// size factors 1 and 2, which must hold the same mass of powder at both.
+// The coarse-graining study of any config (studies/cg_study.hpp): its verdicts on constructed
+// differences, and the whole chain on a small box at size factors 1 and 2, which must hold the
+// same mass of powder at both (its statistics are lbdem-compare-runs', tested in tests/tools).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -20,32 +19,6 @@
 using namespace lbdem;
 using namespace lbdem::studies;
 namespace fs = std::filesystem;
-
-TEST_CASE("cg study statistics: white noise of known mean and spread", "[studies]") {
-  // N independent normal samples: the mean's error is sigma/sqrt(N) and the fluctuation's
-  // sigma/sqrt(2(N-1)). The blocking estimate of each error has a relative spread of
-  // 1/sqrt(2(n_B-1)) with n_B >= N/4 blocks at the block lengths it compares (2 % here), so 15 %
-  // holds them safely; the mean and spread themselves lie within 4 of their errors.
-  const std::size_t n = 4096;
-  const double mu = 3.0, sigma = 0.5;
-  std::mt19937_64 rng(7);
-  std::normal_distribution<double> g(mu, sigma);
-  std::vector<double> x(n);
-  for (double& v : x) v = g(rng);
-  const CgStats s = cg_stats(x);
-  CHECK(s.samples == n);
-  CHECK(s.mean_err == Approx(sigma / std::sqrt(double(n))).epsilon(0.15));
-  CHECK(s.fluctuation_err == Approx(sigma / std::sqrt(2.0 * (n - 1))).epsilon(0.15));
-  CHECK(std::abs(s.mean - mu) < 4 * s.mean_err);
-  CHECK(std::abs(s.fluctuation - sigma) < 4 * s.fluctuation_err);
-  CHECK(s.plateau);
-  // Too few samples for blocking: the moments, no errors.
-  const CgStats few = cg_stats({1.0, 2.0, 3.0});
-  CHECK(few.mean == Approx(2.0));
-  CHECK(few.fluctuation == Approx(1.0));
-  CHECK(std::isnan(few.mean_err));
-  CHECK_FALSE(few.plateau);
-}
 
 TEST_CASE("cg study verdicts: same within two combined errors, close within the tolerance",
           "[studies]") {
@@ -153,7 +126,11 @@ TEST_CASE(
   REQUIRE(col("mean_verdict") < head.size());
   for (std::size_t k = 1; k < obs.size(); ++k) {
     const auto& row = obs[k];
-    CHECK(std::stoi(row[col("samples")]) == 31);  // rows at 0.15, 0.155, ..., 0.3 s
+    // Rows every 0.005 s over 0.15-0.3 s: 31, or one fewer where the run's last row (at its end
+    // step, off the row grid) made the comparison resample at the median spacing.
+    const int samples = std::stoi(row[col("samples")]);
+    CHECK(samples >= 30);
+    CHECK(samples <= 31);
     if (row[col("case")] == "cg1") {
       CHECK(row[col("mean_verdict")].empty());
     } else {

@@ -31,22 +31,50 @@ const std::vector<double>& Table::column(std::string_view name) const {
   return columns[std::size_t(it - names.begin())];
 }
 
+double Table::number(std::string_view name, std::size_t row) const {
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? std::numeric_limits<double>::quiet_NaN()
+                           : columns[std::size_t(it - names.begin())][row];
+}
+
+const std::string& Table::cell(std::string_view name, std::size_t row) const {
+  if (text.empty()) throw ToolError(source + " was read without its text cells");
+  column(name);  // the error for an unknown column
+  return text[std::size_t(std::find(names.begin(), names.end(), name) - names.begin())][row];
+}
+
 namespace {
+// The cells of one line, trimmed; a cell in double quotes keeps its commas and loses its quotes.
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
-  std::stringstream ss(line);
   std::string cell;
-  while (std::getline(ss, cell, ',')) {
-    const auto b = cell.find_first_not_of(" \t\r");
-    const auto e = cell.find_last_not_of(" \t\r");
-    out.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
+  bool quoted = false, was_quoted = false;
+  const auto finish = [&] {
+    if (!was_quoted) {
+      const auto b = cell.find_first_not_of(" \t\r");
+      const auto e = cell.find_last_not_of(" \t\r");
+      cell = b == std::string::npos ? "" : cell.substr(b, e - b + 1);
+    }
+    out.push_back(cell);
+    cell.clear();
+    was_quoted = false;
+  };
+  for (char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+      was_quoted = true;
+    } else if (c == ',' && !quoted) {
+      finish();
+    } else if (!(was_quoted && !quoted && (c == ' ' || c == '\r' || c == '\t'))) {
+      cell += c;
+    }
   }
-  if (!line.empty() && line.back() == ',') out.emplace_back();
+  if (!line.empty()) finish();
   return out;
 }
 }  // namespace
 
-Table read_csv(const std::string& path) {
+Table read_csv(const std::string& path, bool keep_text) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw ToolError("cannot read " + path);
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -62,6 +90,7 @@ Table read_csv(const std::string& path) {
     if (header) {
       t.names = cells;
       t.columns.resize(cells.size());
+      if (keep_text) t.text.resize(cells.size());
       header = false;
       continue;
     }
@@ -71,6 +100,7 @@ Table read_csv(const std::string& path) {
       const double v = std::strtod(cells[c].c_str(), &end);
       const bool ok = !cells[c].empty() && end && *end == '\0';
       t.columns[c].push_back(ok ? v : std::numeric_limits<double>::quiet_NaN());
+      if (keep_text) t.text[c].push_back(cells[c]);
     }
   }
   if (header) throw ToolError(path + " has no header line");

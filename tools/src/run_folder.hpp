@@ -17,21 +17,28 @@ class ToolError : public std::runtime_error {
 };
 inline constexpr int kToolErrorExit = 2;  // the same code as lbdem's input errors
 
-/// A CSV of numbers with a header line, stored by column.
+/// A CSV with a header line, stored by column: every cell as a number (NaN where it is not one),
+/// and as text where asked for (tables with names in them: run folders, labels).
 struct Table {
   std::string source;
   std::vector<std::string> names;
   std::vector<std::vector<double>> columns;
+  std::vector<std::vector<std::string>> text;  // by column; empty unless read with keep_text
 
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
   bool has(std::string_view name) const;
   /// The column `name`; ToolError listing the known columns otherwise.
   const std::vector<double>& column(std::string_view name) const;
+  /// The cell of column `name` in row `row` as a number; NaN if the table has no such column.
+  double number(std::string_view name, std::size_t row) const;
+  /// The text cell (quotes removed); ToolError if the table was read without its text.
+  const std::string& cell(std::string_view name, std::size_t row) const;
 };
 
-/// Reads a CSV of numbers. A row of the wrong width or without its final newline is dropped: the
-/// solver appends and flushes row by row, so a file read during a run can end in a partial line.
-Table read_csv(const std::string& path);
+/// Reads a CSV. A row of the wrong width or without its final newline is dropped: the solver
+/// appends and flushes row by row, so a file read during a run can end in a partial line. A cell
+/// in double quotes may hold commas; the quotes are not part of its text.
+Table read_csv(const std::string& path, bool keep_text = false);
 
 /// l from a config.toml text: [coarse_grain] size_factor, else particles_per_parcel^(1/3), else 1.
 double size_factor_from_toml(std::string_view toml_text, const std::string& source);
