@@ -19,6 +19,8 @@
 #include "scenarios/common/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/collision_summary.hpp"
+#include "tools/src/mill_map_files.hpp"
 #include "tools/src/run_comparison.hpp"
 #include "scenarios/jet_mill/jet_mill_geometry.hpp"
 
@@ -206,7 +208,6 @@ int run_jet_mill_study(const StudyOptions& opt) {
   // The window the tools select rows and snapshots in, its end padded to take each run's last
   // row (the figure script only labels its plots with the window, so it gets the unpadded end).
   const auto [from, to] = figure_window(spin_up, opt.quick, row_interval);
-  const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
   // Outputs of an earlier invocation must not stand in for a tool that fails now.
   for (const char* f : {"collisions.csv", "collisions_impact_speed.csv", "collisions_table.txt",
                         "kinetic_energy_stats.csv", "kinetic_energy_spectra.csv",
@@ -255,23 +256,30 @@ int run_jet_mill_study(const StudyOptions& opt) {
     for (const char* m :
          {"speed_map", "wall_profile", "positions", "gas_profile", "gas_midplane", "summary"})
       fs::remove(dir + "/mill_" + m + ".csv");
-    std::string cmd = shell_quoted((bin / "lbdem-jet-mill-maps").string()) + " " +
-                      shell_quoted(dir) + " --from " + fmt(from, "%.17g") + " --to " +
-                      fmt(to, "%.17g") + " --out " + shell_quoted(dir + "/mill");
+    tools::MillMapOptions maps;
+    maps.dir = dir, maps.prefix = dir + "/mill", maps.from = from, maps.to = to;
     for (const Nozzle& q : g.nozzles)
-      if (!q.feed)
-        cmd += " --jet " + fmt(q.exit.x(), "%.9g") + "," + fmt(q.exit.y(), "%.9g") + "," +
-               fmt(q.dir.x(), "%.9g") + "," + fmt(q.dir.y(), "%.9g");
-    system_ok(cmd, "lbdem-jet-mill-maps");
+      if (!q.feed) {
+        const double n = std::hypot(q.dir.x(), q.dir.y());
+        maps.jets.push_back({Vec3(q.exit.x(), q.exit.y(), 0), Vec3(q.dir.x() / n, q.dir.y() / n, 0),
+                             tools::kJetHalfWidth, tools::kJetLength});
+      }
+    try {
+      std::cout << tools::write_mill_maps(maps);
+    } catch (const tools::ToolError& e) {
+      std::cerr << "warning: no maps of " << c->name << ": " << e.what() << "\n";
+    }
   }
-  std::string runs;
-  for (const Case* c : present)
-    runs += " " + shell_quoted(root + "/" + c->name) + " --label " + c->name;
-  const std::string window = " --from " + fmt(from, "%.17g") + " --to " + fmt(to, "%.17g");
-  system_ok(shell_quoted((bin / "lbdem-collision-stats").string()) + runs + window + " --csv " +
-                shell_quoted(root + "/collisions.csv") + " > " +
-                shell_quoted(root + "/collisions_table.txt"),
-            "lbdem-collision-stats");
+  try {
+    std::vector<tools::CollisionSummary> coll;
+    for (const Case* c : present)
+      coll.push_back(tools::analyse_collisions(tools::RunFolder::open(root + "/" + c->name),
+                                               c->name, from, to));
+    tools::write_collision_csvs(root + "/collisions.csv", coll);
+    write_file_atomic(root + "/collisions_table.txt", tools::collision_table(coll));
+  } catch (const tools::ToolError& e) {
+    std::cerr << "warning: no collision statistics: " << e.what() << "\n";
+  }
   try {
     std::vector<tools::RunStats> ke;
     for (const Case* c : present)
