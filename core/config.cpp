@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -193,20 +194,68 @@ Config Config::from_string(std::string_view text, const std::string& source) {
   return Config(s, "");
 }
 
-Config Config::from_file(const std::string& path) {
+namespace {
+
+// `over` laid on `into` key by key: a table merges with the table of the same name, anything else
+// (a value, an array, an array of tables) replaces what `into` had.
+void merge_into(toml::table& into, const toml::table& over) {
+  for (auto&& [key, node] : over) {
+    if (const toml::table* t = node.as_table())
+      if (toml::table* d = into.get_as<toml::table>(key)) {
+        merge_into(*d, *t);
+        continue;
+      }
+    into.insert_or_assign(key, node);
+  }
+}
+
+// The file's table with its `base` chain resolved (the outermost file's keys win). `chain` holds
+// the files above, to refuse a base that leads back to one of them.
+toml::table read_with_base(const std::string& path, std::vector<std::string>& chain) {
+  toml::table t;
   try {
-    auto s = std::make_shared<State>();
-    s->source = path;
-    s->input = toml::parse_file(path);
-    s->resolved = s->input;
-    return Config(s, "");
+    t = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
     if (b.line == 0)
-      throw InputError("--config", path, "cannot read the file", "give the path of a TOML file");
+      throw InputError(chain.empty() ? "--config" : "base", path, "cannot read the file",
+                       chain.empty() ? "give the path of a TOML file"
+                                     : "give base as a path relative to " + chain.back());
     throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column), "",
                      std::string(e.description()), "correct the TOML syntax at that line");
   }
+  const toml::node* base = t.get("base");
+  if (!base) return t;
+  const auto name = base->value<std::string>();
+  if (!name || name->empty())
+    throw InputError("base", path, "is not a file name",
+                     "give base = \"other.toml\", a path relative to " + path);
+  namespace fs = std::filesystem;
+  const fs::path file = fs::path(*name).is_absolute()
+                            ? fs::path(*name)
+                            : fs::path(path).parent_path() / fs::path(*name);
+  const std::string canonical = fs::weakly_canonical(path).string();
+  chain.push_back(canonical);
+  if (std::find(chain.begin(), chain.end(), fs::weakly_canonical(file).string()) != chain.end())
+    throw InputError("base", "\"" + *name + "\"",
+                     "leads back to " + file.string() + ", which it is based on",
+                     "base each preset on one that does not return to it");
+  toml::table merged = read_with_base(file.string(), chain);
+  chain.pop_back();
+  t.erase("base");
+  merge_into(merged, t);
+  return merged;
+}
+
+}  // namespace
+
+Config Config::from_file(const std::string& path) {
+  auto s = std::make_shared<State>();
+  s->source = path;
+  std::vector<std::string> chain;
+  s->input = read_with_base(path, chain);
+  s->resolved = s->input;
+  return Config(s, "");
 }
 
 Config Config::detached() const {

@@ -94,7 +94,9 @@ std::map<std::string, ReferenceKey> collect_keys(const std::string& source_dir) 
   std::map<std::string, std::vector<Input>> inputs;
   for (const std::string& name : names) {
     std::vector<std::string> files = toml_files(source_dir + "/scenarios/" + name + "/presets");
-    for (const std::string& file : files) inputs[name].push_back({file, read_text(file), false});
+    // A preset based on another (base = FILE) is read as it resolves.
+    for (const std::string& file : files)
+      inputs[name].push_back({file, Config::from_file(file).resolved_toml(), false});
     // Of presets that read the same keys the first is read: the one on the coarsest gas grid,
     // which builds fastest (the jet mill's paper-scale grids take seconds).
     const auto dx = [](const Input& in) {

@@ -1,9 +1,14 @@
-// core/config: the fix an unknown key gets, and values in errors printed as the user wrote them.
+// core/config: the fix an unknown key gets, values in errors printed as the user wrote them, and
+// presets based on others.
 #include <catch2/catch.hpp>
 
 #include "core/config.hpp"
 #include "core/error.hpp"
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <functional>
 
 using namespace lbdem;
@@ -111,4 +116,63 @@ TEST_CASE("values in input errors read as written, not at 17 digits", "[core][co
              Contains("1.0000001"));
   CHECK_THAT(error_of("[a]\nx = 0.3\ny = 2\n", [](const Config& c) { c.get("a.y", 1.0); }),
              Contains("'a.x' = 0.3: unknown key"));
+}
+
+namespace {
+
+// Writes `text` to DIR/name and returns the path.
+std::string write_preset(const std::filesystem::path& dir, const std::string& name,
+                         const std::string& text) {
+  std::filesystem::create_directories((dir / name).parent_path());
+  std::ofstream(dir / name) << text;
+  return (dir / name).string();
+}
+
+}  // namespace
+
+TEST_CASE("a preset based on another takes its keys and overrides them key by key",
+          "[core][config]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("lbdem_base_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  write_preset(dir, "series/cg1.toml",
+               "scenario = \"box\"\n[run]\nend_time = 1.0\nseed = 3\n"
+               "[fluid]\ndx = 2e-4\nfaces = { z_lo = \"wall\" }\n"
+               "[[fill]]\nmass = 1.0\n[[fill]]\nmass = 2.0\n");
+  // Relative to the file that names it; a base of a base; tables merge, values and arrays of
+  // tables replace.
+  write_preset(dir, "series/cg2.toml", "base = \"cg1.toml\"\n[fluid]\ndx = 4e-4\n");
+  const std::string cg2_fixed =
+      write_preset(dir, "cg2_fixed.toml",
+                   "base = \"series/cg2.toml\"\n[run]\nend_time = 2.0\n[[fill]]\nmass = 5.0\n");
+  const Config c = Config::from_file(cg2_fixed);
+  CHECK(c.get_string("scenario", "") == "box");
+  CHECK(c.section("run").get("end_time", 0.0) == 2.0);
+  CHECK(c.section("run").get_int("seed", 0) == 3);
+  CHECK(c.section("fluid").get("dx", 0.0) == 4e-4);
+  CHECK(c.section("fluid").section("faces").get_string("z_lo", "") == "wall");
+  REQUIRE(c.table_array("fill").size() == 1);
+  CHECK(c.table_array("fill")[0].get("mass", 0.0) == 5.0);
+  // The resolved config (a run folder's config.toml) names no base: it stands alone.
+  CHECK(c.resolved_toml().find("base") == std::string::npos);
+  CHECK_NOTHROW(c.check_unknown_keys());
+
+  // A base that is missing, or that leads back to the file, is refused naming the key.
+  const std::string missing = write_preset(dir, "missing.toml", "base = \"none.toml\"\n");
+  try {
+    (void)Config::from_file(missing);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.key() == "base");
+  }
+  write_preset(dir, "a.toml", "base = \"b.toml\"\n");
+  const std::string b = write_preset(dir, "b.toml", "base = \"a.toml\"\n");
+  try {
+    (void)Config::from_file(b);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.key() == "base");
+    CHECK(std::string(e.what()).find("leads back") != std::string::npos);
+  }
+  fs::remove_all(dir);
 }
