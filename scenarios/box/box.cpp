@@ -241,12 +241,12 @@ BoxScenario::BoxScenario(const Config& cfg) {
   }
   if (has_fluid) {
     const lbm::LbmSettings lattice = fluid_.lattice();
-    gas_ = std::make_unique<lbm::LbmSolver>(lattice);
+    auto gas = std::make_unique<lbm::LbmSolver>(lattice);
     const Vec3 u0 = fluid_.initial_velocity * fluid_.units().velocity_to_lattice(1.0);
     // The velocity moment is (sum c f + F/2) / rho (Guo's half-force shift, lbm/cell.hpp): start
     // the populations at u0 - F / (2 rho), so the gas moves at initial_velocity (at rest under
     // gravity, in hydrostatic balance) from the first step.
-    gas_->initialize([&](int x, int y, int z, double& rho, Vec3& v) {
+    gas->initialize([&](int x, int y, int z, double& rho, Vec3& v) {
       rho = fluid_.rest_density(x, y, z);
       v = u0 - lattice.body_force / (2 * rho);
     });
@@ -255,7 +255,9 @@ BoxScenario::BoxScenario(const Config& cfg) {
     if (fluid_.wall_function)
       for (int f = 0; f < 6; ++f)
         if (fluid_.faces[std::size_t(f)].kind == "wall")
-          gas_->set_wall_function(gas_->face_body(f), true);
+          gas->set_wall_function(gas->face_body(f), true);
+    gas_ = std::make_unique<run::CoupledGas>(std::move(gas), sub_, fluid_.dt,
+                                             [this](double t) { ramp_inlets(t); });
   }
   if (cfg.has("coupling")) {
     if (!has_fluid || gas_only_)
@@ -270,9 +272,8 @@ BoxScenario::BoxScenario(const Config& cfg) {
     }
     coupling_ = read_coupling(cfg.section("coupling"), fluid_, 2 * r_lo, 2 * r_hi, l,
                               mats.front().density, fluid_.weighs, s.gravity);
-    interval_ = exchange_interval(sub_, coupling_.exchange_every);
-    coupler_ = std::make_unique<coupling::Coupler>(*gas_, lbm::LatticeFrame{fluid_.lo, fluid_.dx},
-                                                   fluid_.units(), coupling_.settings);
+    coupled_ = true;
+    rebuild_coupler();
     solver_->track_external_work();
   }
 }
@@ -284,13 +285,15 @@ void BoxScenario::add_wall(dem::Wall w) {
 }
 
 void BoxScenario::rebuild_coupler() {
-  if (!coupler_) return;
-  coupler_ = std::make_unique<coupling::Coupler>(*gas_, lbm::LatticeFrame{fluid_.lo, fluid_.dx},
-                                                 fluid_.units(), coupling_.settings);
+  if (!coupled_) return;
+  gas_->couple(
+      std::make_unique<coupling::Coupler>(gas_->gas(), lbm::LatticeFrame{fluid_.lo, fluid_.dx},
+                                          fluid_.units(), coupling_.settings),
+      exchange_interval(sub_, coupling_.exchange_every));
 }
 
 std::int64_t BoxScenario::cycle() const {
-  return coupler_ ? interval_.dem_steps : sub_.cycle();
+  return gas_ ? gas_->cycle() : sub_.cycle();
 }
 
 void BoxScenario::banner(Log& log) const {
@@ -312,15 +315,15 @@ void BoxScenario::banner(Log& log) const {
               " kg in this run)");
   }
   if (gas_) fluid_banner(log, fluid_, sub_);
-  if (coupler_) {
+  if (coupled_) {
     std::vector<double> eps;
-    gas_->porosity(eps);
+    gas_->gas().porosity(eps);
     double cells = 0;
     for (double e : eps) cells += e > 0 ? 1.0 : 0.0;
     coupling_banner(log, coupling_, fluid_, sub_, solver_->particles().size(), cells);
     // The balanced kernel conserves each particle's volume exactly either way; an unconverged
     // balance leaves a uniform solid fraction deposited off uniform by this much at walls.
-    const double balance = coupler_->kernel().balance_error();
+    const double balance = gas_->coupler()->kernel().balance_error();
     log.derived("kernel balance error", balance, "",
                 "(a uniform solid fraction deposited at walls and solid cells is off by this)");
     if (balance > 1e-6)
@@ -343,57 +346,18 @@ DemWatch BoxScenario::watch() const {
   return dem_watch(step_, *solver_, others);
 }
 
-void BoxScenario::advance_gas(dem::DemSolver& s) {
-  if (!gas_) return;
+void BoxScenario::ramp_inlets(double t) {
   // Ramped inlets take the velocity of the time the coming gas step starts at.
-  const auto ramp = [&] {
-    const double t = double(gas_->steps()) * fluid_.dt;
-    for (int f = 0; f < 6; ++f) {
-      const FluidFace& face = fluid_.faces[std::size_t(f)];
-      if (!face.ramped()) continue;
-      const Vec3 v = face.velocity_at(t);
-      if (v == inlet_set_[std::size_t(f)]) continue;
-      inlet_set_[std::size_t(f)] = v;
-      const Vec3 lu = v * fluid_.units().velocity_to_lattice(1.0);
-      gas_->set_wall_velocity(gas_->face_body(f), [lu](const Vec3&) { return lu; });
-    }
-  };
-  // A stop (SIGINT, SIGTERM) is taken between gas steps, where an exchange interval or a DEM step
-  // holds thousands of them: the driver then checkpoints the gas part-way (with the interval's
-  // state) and the DEM where it stands, and a resume runs the rest.
-  if (coupler_) {
-    if (coupler_->steps_left() == 0) {  // else an interval resumed part-way
-      if (s.steps() % interval_.dem_steps != 0) return;
-      coupler_->begin_interval(s.particles(), interval_.gas_steps);
-    }
-    while (coupler_->steps_left() > 0) {
-      if (stop_requested()) return;
-      ramp();
-      coupler_->before_gas_step();
-      gas_->step();
-    }
-    report_ = coupler_->end_interval(s.particles());
-    return;
+  for (int f = 0; f < 6; ++f) {
+    const FluidFace& face = fluid_.faces[std::size_t(f)];
+    if (!face.ramped()) continue;
+    const Vec3 v = face.velocity_at(t);
+    if (v == inlet_set_[std::size_t(f)]) continue;
+    inlet_set_[std::size_t(f)] = v;
+    const Vec3 lu = v * fluid_.units().velocity_to_lattice(1.0);
+    lbm::LbmSolver& gas = gas_->gas();
+    gas.set_wall_velocity(gas.face_body(f), [lu](const Vec3&) { return lu; });
   }
-  const std::int64_t due = gas_steps_due(s.steps() + 1);
-  while (gas_->steps() < due) {
-    if (stop_requested()) return;
-    ramp();
-    gas_->step();
-  }
-}
-
-std::int64_t BoxScenario::gas_steps_due(std::int64_t n) const {
-  // The gas leads: by whole exchange intervals when coupled, else by the DEM step it holds.
-  const std::int64_t m = sub_.dem_per_gas, k = interval_.dem_steps;
-  return coupler_ ? (n + k - 1) / k * interval_.gas_steps
-         : m > 1  ? (n + m - 1) / m
-                  : n * sub_.gas_per_dem;
-}
-
-bool BoxScenario::gas_behind(const dem::DemSolver& s) const {
-  if (!gas_) return false;
-  return coupler_ ? coupler_->steps_left() > 0 : gas_->steps() < gas_steps_due(s.steps() + 1);
 }
 
 void BoxScenario::before_step(dem::DemSolver& s) {
@@ -449,7 +413,7 @@ std::vector<std::string> BoxScenario::box_columns() const {
     const auto cols = fluid_columns(fluid_);
     c.insert(c.end(), cols.begin(), cols.end());
   }
-  if (coupler_)
+  if (coupled_)
     for (const char* name :
          {"drag_force_x_N", "drag_force_y_N", "drag_force_z_N", "pressure_gradient_force_z_N",
           "mean_eps_at_particles", "eps_clipped_cells", "gas_work_on_particles_J"})
@@ -477,11 +441,11 @@ std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
   }
   v.push_back(inflow_.inserted);
   if (gas_) {
-    const auto g = fluid_values(*gas_, fluid_);
+    const auto g = fluid_values(gas_->gas(), fluid_);
     v.insert(v.end(), g.begin(), g.end());
   }
-  if (coupler_) {
-    const auto& r = report_;
+  if (coupled_) {
+    const auto& r = gas_->report();
     v.insert(v.end(), {r.drag[0], r.drag[1], r.drag[2], r.pressure_force[2], r.mean_eps_particles,
                        double(r.porosity.clipped), s.energy().external_work});
   }
@@ -494,7 +458,7 @@ std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
 
 std::array<std::int64_t, 3> BoxScenario::lattice() const {
   if (!gas_) return {0, 0, 0};
-  const auto& g = gas_->settings();
+  const auto& g = gas_->gas().settings();
   return {g.nx, g.ny, g.nz};
 }
 
@@ -502,7 +466,7 @@ int BoxScenario::run(const RunContext& ctx) {
   DriverHooks hooks;
   hooks.before_step = [this, &ctx](dem::DemSolver& s) {
     before_step(s);
-    advance_gas(s);
+    if (gas_) gas_->advance(s, stop_requested);
     if (inflow_.behind_at >= 0 && !inflow_.behind_warned && ctx.log) {
       inflow_.behind_warned = true;
       ctx.log->line("warning: inflow: the feed region is full at t = " +
@@ -512,9 +476,9 @@ int BoxScenario::run(const RunContext& ctx) {
                     "inflow.hi or give the feed a velocity");
     }
     // Clipped gas fractions: said once per run, with where (kernel.hpp).
-    if (coupler_ && report_.porosity.clipped > 0 && !clip_warned_ && ctx.log) {
+    if (coupled_ && gas_->report().porosity.clipped > 0 && !clip_warned_ && ctx.log) {
       clip_warned_ = true;
-      const auto& p = report_.porosity;
+      const auto& p = gas_->report().porosity;
       ctx.log->line("warning: coupling: eps fell below coupling.eps_min = " +
                     to_text(coupling_.settings.eps_min) + " in " + std::to_string(p.clipped) +
                     " cells at t = " + to_text(s.time()) + " s (lowest " + to_text(p.lowest) +
@@ -523,7 +487,7 @@ int BoxScenario::run(const RunContext& ctx) {
                     "); clipped there. A wider coupling.kernel_width smooths the bed");
     }
   };
-  hooks.unfinished = [this](const dem::DemSolver& s) { return gas_behind(s); };
+  hooks.unfinished = [this](const dem::DemSolver& s) { return gas_ && gas_->behind(s); };
   hooks.extra_columns = box_columns();
   hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
   hooks.save = [this](H5Out& f) {
@@ -531,16 +495,9 @@ int BoxScenario::run(const RunContext& ctx) {
     os << rng_;
     f.attr("rng_state", os.str());
     f.attr("inflow_inserted_kg", inflow_.inserted);
-    if (gas_) save_fluid(f, *gas_);
-    if (coupler_ && coupler_->steps_left() > 0) {  // stopped inside an interval's gas steps
-      const coupling::IntervalState st = coupler_->interval_state();
-      f.group("/coupling_interval");
-      f.attr("steps", std::int64_t(st.steps), "/coupling_interval");
-      f.attr("steps_done", std::int64_t(st.steps_done), "/coupling_interval");
-      f.attr("mean_eps", st.mean_eps, "/coupling_interval");
-      f.write("/coupling_interval/beta", st.beta);
-      f.write("/coupling_interval/f_grad", st.f_grad);
-      f.write("/coupling_interval/velocity_sum", st.velocity_sum);
+    if (gas_) {
+      save_fluid(f, gas_->gas());
+      gas_->save_interval(f);  // stopped inside an interval's gas steps
     }
   };
   hooks.load = [this](const H5In& f) {
@@ -548,46 +505,19 @@ int BoxScenario::run(const RunContext& ctx) {
     is >> rng_;
     inflow_.inserted = f.attr_double("inflow_inserted_kg");
     if (gas_) {
-      load_fluid(f, *gas_);
-      // The gas leads by design (gas_steps_due); any other count means a different time step. A
-      // coupled checkpoint at a DEM step inside an interval resumes too: the gas has run the
-      // interval and the particles hold its force (ParticleArrays::external, checkpointed); only
-      // a row at that interval's end would miss its exchange report (drag columns), which is not
-      // kept. A stop between gas steps leaves the gas part of the way to the next DEM step's
-      // count, and a coupled one the interval's state.
-      const std::int64_t n = solver_->steps(), due = gas_steps_due(n), g = gas_->steps();
-      const auto wrong = [&](const std::string& expected) {
-        return std::runtime_error("checkpoint: " + std::to_string(g) + " gas steps at DEM step " +
-                                  std::to_string(n) + ", expected " + expected);
-      };
-      if (f.has("/coupling_interval")) {
-        coupling::IntervalState st;
-        st.steps = int(f.attr_int("steps", "/coupling_interval"));
-        st.steps_done = int(f.attr_int("steps_done", "/coupling_interval"));
-        st.mean_eps = f.attr_double("mean_eps", "/coupling_interval");
-        st.beta = f.doubles("/coupling_interval/beta");
-        st.f_grad = f.vec3s("/coupling_interval/f_grad");
-        st.velocity_sum = f.vec3s("/coupling_interval/velocity_sum");
-        if (!coupler_ || n % interval_.dem_steps != 0 || st.steps != interval_.gas_steps ||
-            g != due + st.steps_done)
-          throw wrong(std::to_string(due) + " and an interval of " +
-                      std::to_string(interval_.gas_steps) + " gas steps (the checkpoint's: " +
-                      std::to_string(st.steps_done) + " of " + std::to_string(st.steps) + ")");
-        coupler_->resume_interval(solver_->particles(), st);
-      } else if (g != due && !(!coupler_ && g > due && g < gas_steps_due(n + 1))) {
-        throw wrong(std::to_string(due));
-      }
+      load_fluid(f, gas_->gas());
+      gas_->resume(f, *solver_);
     }
   };
   if (gas_) {
     hooks.snapshot = [this](const std::string& dir, const std::vector<double>& times) {
-      write_fluid_snapshot(dir, *gas_, fluid_, times,
+      write_fluid_snapshot(dir, gas_->gas(), fluid_, times,
                            extra_.snapshot ? extra_.snapshot() : std::vector<SnapshotArray>{});
     };
     hooks.health = [this, &ctx](const dem::DemSolver& s) {
-      auto error = check_fluid_health(*gas_, fluid_, s.time(), s.steps());
+      auto error = check_fluid_health(gas_->gas(), fluid_, s.time(), s.steps());
       if (!error && !mach_warned_ && ctx.log)
-        if (auto w = check_fluid_mach(*gas_, fluid_, s.time())) {
+        if (auto w = check_fluid_mach(gas_->gas(), fluid_, s.time())) {
           mach_warned_ = true;
           ctx.log->line(*w);
         }

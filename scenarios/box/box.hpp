@@ -5,9 +5,9 @@
 // the physics tests and the benchmarks are all set up through it.
 //
 // With a [fluid] table the box also holds a gas (lbm::LbmSolver, fluid_config.hpp), advanced
-// alongside the particles: an integer number of gas steps per DEM step, or of DEM steps per gas
-// step (SubCycle), the gas stepping first in each cycle (docs/physics.md, Coupled time step). With
-// [coupling] as well (coupling_config.hpp) gas and particles exchange momentum
+// alongside the particles by run::CoupledGas: an integer number of gas steps per DEM step, or of
+// DEM steps per gas step (SubCycle), the gas stepping first in each cycle (docs/physics.md, Coupled
+// time step). With [coupling] as well (coupling_config.hpp) gas and particles exchange momentum
 // (coupling/coupler.hpp) once per exchange interval of whole cycles: the gas runs the interval's
 // steps first, then the DEM. A box with [fluid] and no particles, fills or [[materials]] is a pure
 // gas run: the DEM then only keeps the clock, one DEM step per gas step, and takes no [dem] table.
@@ -21,6 +21,7 @@
 #include "dem/insertion.hpp"
 #include "lbm/lbm_solver.hpp"
 #include "coupling/coupler.hpp"
+#include "run/coupled_gas.hpp"
 #include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/coupling_config.hpp"
 #include "scenarios/common/dem_config.hpp"
@@ -40,24 +41,14 @@ class BoxScenario : public Scenario {
   int run(const RunContext& ctx) override;
   dem::DemSolver& solver() { return *solver_; }
   const dem::DemSolver& solver() const { return *solver_; }
-  const lbm::LbmSolver* gas() const { return gas_.get(); }
-  const coupling::Coupler* coupler() const { return coupler_.get(); }
+  const lbm::LbmSolver* gas() const { return gas_ ? &gas_->gas() : nullptr; }
+  const coupling::Coupler* coupler() const { return gas_ ? gas_->coupler() : nullptr; }
   /// The gas, or null without [fluid].
-  lbm::LbmSolver* gas() { return gas_.get(); }
+  lbm::LbmSolver* gas() { return gas_ ? &gas_->gas() : nullptr; }
   const FluidConfig& fluid() const { return fluid_; }
   const SubCycle& sub_cycle() const { return sub_; }
-  /// Advances the gas by the steps that come before DEM step s.steps() (SubCycle), or, coupled,
-  /// runs the exchange interval that starts there; returns early, between gas steps, when a stop
-  /// was asked for (stop_requested), leaving gas_behind() true.
-  void advance_gas(dem::DemSolver& s);
-  /// Gas steps done when the DEM stands at step n (the gas leads: by whole exchange intervals when
-  /// coupled, else by the DEM step it holds).
-  std::int64_t gas_steps_due(std::int64_t n) const;
-  /// The gas stopped short of the steps the coming DEM step needs (a stop between gas steps).
-  bool gas_behind(const dem::DemSolver& s) const;
   /// The exchange, or null without [coupling].
-  coupling::Coupler* coupler() { return coupler_.get(); }
-  const coupling::ExchangeReport& exchange_report() const { return report_; }
+  coupling::Coupler* coupler() { return gas_ ? gas_->coupler() : nullptr; }
   /// DEM steps at which every solver stands at the same time (output and checkpoint instants).
   std::int64_t cycle() const;
   /// Columns and values the box adds to timeseries.csv after the driver's (public for scenarios
@@ -89,6 +80,9 @@ class BoxScenario : public Scenario {
   DemWatch watch() const;
 
  private:
+  /// Sets each ramped inlet to its velocity at time t [s] (before every gas step).
+  void ramp_inlets(double t);
+
   struct Inflow {
     bool on = false;
     Vec3 lo, hi, velocity;
@@ -106,11 +100,8 @@ class BoxScenario : public Scenario {
   };
 
   std::unique_ptr<dem::DemSolver> solver_;
-  std::unique_ptr<lbm::LbmSolver> gas_;
-  std::unique_ptr<coupling::Coupler> coupler_;
+  std::unique_ptr<run::CoupledGas> gas_;  // the gas and, coupled, the exchange; null without gas
   CouplingConfig coupling_;
-  ExchangeInterval interval_;
-  coupling::ExchangeReport report_;
   std::array<Vec3, 6> inlet_set_;  // inflow velocity last given to each ramped face [m/s]
   Extra extra_;
   bool clip_warned_ = false;
@@ -118,6 +109,7 @@ class BoxScenario : public Scenario {
   FluidConfig fluid_;
   SubCycle sub_;
   bool gas_only_ = false;
+  bool coupled_ = false;  // [coupling]: gas and particles exchange momentum
   OutputSettings out_;
   StepChoice step_;
   std::vector<Implausible> implausible_;  // warned about in the banner

@@ -45,18 +45,6 @@ CouplingConfig read_coupling(const Config& c, const FluidConfig& fluid, double d
   return out;
 }
 
-ExchangeInterval exchange_interval(const SubCycle& sub, int every) {
-  ExchangeInterval e;
-  if (sub.dem_per_gas > 1) {
-    e.dem_steps = std::int64_t(every) * sub.dem_per_gas;
-    e.gas_steps = every;
-  } else {
-    e.dem_steps = every;
-    e.gas_steps = every * sub.gas_per_dem;
-  }
-  return e;
-}
-
 void coupling_banner(Log& log, const CouplingConfig& c, const FluidConfig& fluid,
                      const SubCycle& sub, std::size_t particles, double fluid_cells) {
   const auto& s = c.settings;

@@ -32,12 +32,8 @@ struct CouplingConfig {
 CouplingConfig read_coupling(const Config& c, const FluidConfig& fluid, double d_min, double d_max,
                              double l, double rho_p, bool gas_weighs, const Vec3& gravity);
 
-/// DEM steps per exchange interval and gas steps in it.
-struct ExchangeInterval {
-  std::int64_t dem_steps = 1;
-  int gas_steps = 1;
-};
-ExchangeInterval exchange_interval(const SubCycle& sub, int exchange_every);
+using run::exchange_interval;
+using run::ExchangeInterval;
 
 void coupling_banner(Log& log, const CouplingConfig& c, const FluidConfig& fluid,
                      const SubCycle& sub, std::size_t particles, double fluid_cells);

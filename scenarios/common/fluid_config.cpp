@@ -502,21 +502,6 @@ double FluidConfig::wall_offset(int axis) const {
   return box_lo[axis] - lo[axis];
 }
 
-SubCycle conform_dem_step(double dem_dt, double gas_dt) {
-  SubCycle s;
-  s.dem_dt_asked = dem_dt;
-  const double r = dem_dt / gas_dt;
-  // The 1e-9 keeps a ratio meant to be whole (3 dt_gas given as 2.9999999999 dt_gas) whole.
-  if (r >= 1 - 1e-9) {
-    s.gas_per_dem = static_cast<int>(std::floor(r * (1 + 1e-9)));
-    s.dem_dt = s.gas_per_dem * gas_dt;
-  } else {
-    s.dem_per_gas = static_cast<int>(std::ceil(1 / r * (1 - 1e-9)));
-    s.dem_dt = gas_dt / s.dem_per_gas;
-  }
-  return s;
-}
-
 void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub) {
   const auto& r = f.report;
   const lbm::LatticeUnits u = f.units();

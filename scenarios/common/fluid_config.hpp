@@ -37,6 +37,7 @@
 #include "core/log.hpp"
 #include "lbm/lbm_solver.hpp"
 #include "lbm/units.hpp"
+#include "run/clock.hpp"
 
 namespace lbdem::scenarios {
 
@@ -121,26 +122,9 @@ struct FluidConfig {
 FluidConfig read_fluid(const Config& fluid, const Vec3& lo, const Vec3& hi,
                        const std::array<bool, 3>& box_periodic, const Vec3& gravity);
 
-/// How the gas and the DEM share time: an integer number of gas steps per DEM step or of DEM
-/// steps per gas step (docs/physics.md, Coupled time step). The gas step is the one the config
-/// fixes (it sets tau, Mach and Dp / (rho c_s^2)); the DEM step is only ever shortened to fit (see
-/// conform_dem_step).
-struct SubCycle {
-  int gas_per_dem = 1;                  // > 1: the DEM step holds this many gas steps
-  int dem_per_gas = 1;                  // > 1: the gas step holds this many DEM steps
-  double dem_dt_asked = 0, dem_dt = 0;  // [s]
-  /// DEM steps per coupling cycle: instants where both solvers stand at the same time.
-  std::int64_t cycle() const { return dem_per_gas; }
-  /// Gas steps to take before DEM step number `dem_step` (0-based): the gas leads, so the DEM
-  /// steps of a cycle see the gas at the cycle's end (docs/physics.md, Coupled time step: LBM, then
-  /// DEM).
-  int gas_steps_before(std::int64_t dem_step) const {
-    return dem_per_gas > 1 ? (dem_step % dem_per_gas == 0 ? 1 : 0) : gas_per_dem;
-  }
-};
-/// dt_dem >= dt_gas: dt_dem = n dt_gas with n = floor(dt_dem / dt_gas); else dt_dem = dt_gas / m
-/// with m = ceil(dt_gas / dt_dem). Both only shorten the DEM step, so its t_c/20 check still holds.
-SubCycle conform_dem_step(double dem_dt, double gas_dt);
+// The coupled clock lives in the run layer (run/clock.hpp).
+using run::conform_dem_step;
+using run::SubCycle;
 
 /// Derived gas numbers for the start-up banner (docs/user-guide.md) and the stability warnings.
 void fluid_banner(Log& log, const FluidConfig& f, const SubCycle& sub);
