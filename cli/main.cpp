@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "core/error.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 #include "scenarios/run_command.hpp"
 #include "studies/study_command.hpp"
 
@@ -93,9 +93,9 @@ int main(int argc, char** argv) {
   } catch (const lbdem::InputError& e) {
     std::cerr << "lbdem: error: " << e.what() << "\n";
     return lbdem::kInputErrorExit;
-  } catch (const lbdem::scenarios::Diverged& e) {
+  } catch (const lbdem::run::Diverged& e) {
     std::cerr << "lbdem: error: " << e.what() << "\n";
-    return lbdem::scenarios::kDivergedExit;
+    return lbdem::run::kDivergedExit;
   } catch (const std::exception& e) {
     std::cerr << "lbdem: failed: " << e.what() << "\n";
     return 1;

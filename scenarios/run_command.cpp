@@ -19,7 +19,7 @@
 #include "core/h5.hpp"
 #include "core/log.hpp"
 #include "scenarios/box/box.hpp"
-#include "scenarios/common/checkpoint_check.hpp"
+#include "run/checkpoint_check.hpp"
 #include "scenarios/fluidized_bed/fluidized_bed.hpp"
 #include "scenarios/jet_mill/jet_mill.hpp"
 #include "scenarios/rheometer/rheometer.hpp"

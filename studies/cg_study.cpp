@@ -10,7 +10,7 @@
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
-#include "scenarios/common/run_manifest.hpp"
+#include "run/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
 #include "studies/study_case.hpp"
 #include "tools/src/run_comparison.hpp"
@@ -275,7 +275,7 @@ int run_cg_study(const StudyOptions& opt) {
   text << "level     parcels   simulated s   wall s per simulated s   speed-up\n";
   for (const auto& r : results) {
     double parcels = std::nan("");
-    if (const auto m = scenarios::read_run_manifest(r.dir)) parcels = m->number("particles");
+    if (const auto m = run::read_run_manifest(r.dir)) parcels = m->number("particles");
     const PartCosts cost = part_costs(r.dir);
     lv_csv << r.level->name << "," << num(r.level->l, "%g") << "," << num(parcels, "%.0f") << ","
            << num(r.simulated) << "," << (cost.total > 0 ? num(cost.total) : "") << ","

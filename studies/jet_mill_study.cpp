@@ -16,7 +16,7 @@
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "studies/study_case.hpp"
 #include "tools/src/collision_summary.hpp"
@@ -28,6 +28,7 @@ namespace lbdem::studies {
 
 // A study builds on the scenarios' configs, geometry and run command.
 using namespace lbdem::scenarios;
+using namespace lbdem::run;
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,6 @@
 #include "studies/study_case.hpp"
 
-#include "scenarios/common/run_manifest.hpp"
+#include "run/run_manifest.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -16,14 +16,15 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/run_clock.hpp"
-#include "scenarios/common/run_cost.hpp"
-#include "scenarios/common/run_manifest.hpp"
+#include "run/run_cost.hpp"
+#include "run/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
 
 namespace lbdem::studies {
 
 // A study builds on the scenarios' configs, geometry and run command.
 using namespace lbdem::scenarios;
+using namespace lbdem::run;
 
 namespace fs = std::filesystem;
 

@@ -139,7 +139,7 @@ def energy_sources(cols):
 
 
 def energy_moved(cols):
-    """The energy moved, as the DEM watchdog takes it (scenarios/common/dem_driver.cpp): kinetic +
+    """The energy moved, as the DEM watchdog takes it (run/dem_driver.cpp): kinetic +
     elastic + dissipated + |each source|. It grows from the first motion on and does not cross zero
     the way the injected energy (a sum of signed sources) or the potential energy do. Inserted and
     removed energy enter as one source, their difference: the series holds no more."""

@@ -25,10 +25,10 @@
 #include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/coupling_config.hpp"
 #include "scenarios/common/dem_config.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "scenarios/common/fluid_output.hpp"
-#include "scenarios/common/run_context.hpp"
+#include "run/run_context.hpp"
 #include "scenarios/common/scenario.hpp"
 
 namespace lbdem::scenarios {

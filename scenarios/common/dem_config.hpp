@@ -10,6 +10,7 @@
 #include "dem/dem_solver.hpp"
 #include "dem/insertion.hpp"
 #include "dem/time_step.hpp"
+#include "run/step_choice.hpp"
 
 namespace lbdem::scenarios {
 
@@ -43,15 +44,7 @@ dem::CollisionSettings read_collisions(const Config& c);
 /// [dem] time step and watchdog limits: dt given (times dt_factor, the coarse-graining rule's step
 /// factor), or t_c / steps_per_contact. A dt above t_c/20 at the impact speed is an error unless
 /// force_dt = true (the seed studies run at t_c/9 to t_c/16 and force it).
-struct StepChoice {
-  double dt, impact_speed;
-  dem::TimeScales scales;
-  double dt_factor = 1;  // the parcels' step over dem.dt (coarse graining)
-  bool forced = false;   // dem.force_dt
-  // The DEM watchdog's limits (dem_driver.hpp, DemWatch): dem.max_speed_factor and
-  // dem.max_energy_error.
-  double max_speed_factor = 10, max_energy_error = 0.1;
-};
+using run::StepChoice;  // run/step_choice.hpp
 /// A default step (t_c / steps_per_contact) that is not finite and positive is refused naming
 /// the first of `suspects`, the inputs that made t_c.
 StepChoice choose_time_step(const Config& dem_cfg, const dem::ContactSettings& cs,

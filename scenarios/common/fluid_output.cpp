@@ -8,9 +8,12 @@
 #include "core/deterministic_sum.hpp"
 #include "core/error.hpp"
 #include "lbm/d3q19.hpp"
-#include "scenarios/common/xdmf.hpp"
+#include "run/xdmf.hpp"
 
 namespace lbdem::scenarios {
+
+using run::GasGrid;
+using run::write_fluid_xdmf;
 
 namespace fs = std::filesystem;
 

@@ -8,10 +8,13 @@
 #include <vector>
 
 #include "core/log.hpp"
-#include "scenarios/common/dem_driver.hpp"
-#include "scenarios/common/run_context.hpp"
+#include "run/dem_driver.hpp"
+#include "run/run_context.hpp"
 
 namespace lbdem::scenarios {
+
+// The scenarios run on the run layer's loop, clock and run-folder files (run/).
+using namespace lbdem::run;
 
 class Scenario {
  public:

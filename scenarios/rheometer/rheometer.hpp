@@ -15,7 +15,7 @@
 #include "dem/dem_solver.hpp"
 #include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/dem_config.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 #include "scenarios/common/scenario.hpp"
 
 namespace lbdem::scenarios {

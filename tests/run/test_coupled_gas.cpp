@@ -54,7 +54,7 @@ TEST_CASE("coupled gas: three gas steps per DEM step, each ramp told its start t
     CHECK(ramp_times[k] == Approx(double(k) * gas_dt).margin(1e-18));
 }
 
-TEST_CASE("coupled gas: four DEM steps per gas step; a stop leaves it behind until resumed",
+TEST_CASE("coupled gas: four DEM steps per gas step, and a stop leaves it behind until resumed",
           "[run]") {
   const double gas_dt = 4e-5;
   const run::SubCycle sub = run::conform_dem_step(1e-5, gas_dt);

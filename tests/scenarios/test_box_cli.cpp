@@ -15,7 +15,7 @@
 #include "core/h5.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/resume_check.hpp"
-#include "scenarios/common/run_cost.hpp"
+#include "run/run_cost.hpp"
 
 namespace fs = std::filesystem;
 
@@ -123,11 +123,11 @@ TEST_CASE("a resumed run equals an uninterrupted one bitwise", "[scenarios][chec
   REQUIRE(cli("run box --out " + full + kSmall).code == 0);
   // Stop at the checkpoint at 0.03 s, then continue to 0.06 s.
   REQUIRE(cli("run box --out " + part + kSmall + " --set run.end_time=0.03").code == 0);
-  const auto first = lbdem::scenarios::read_run_cost(part + "/checkpoint.h5");
+  const auto first = lbdem::run::read_run_cost(part + "/checkpoint.h5");
   REQUIRE(cli("run --resume " + part + " --set run.end_time=0.06").code == 0);
   // The cost sums (run_cost.hpp) go through the checkpoint: after the resume they still begin at
   // t = 0 (a resume that started them afresh would begin them at 0.03) and hold both invocations.
-  const auto both = lbdem::scenarios::read_run_cost(part + "/checkpoint.h5");
+  const auto both = lbdem::run::read_run_cost(part + "/checkpoint.h5");
   REQUIRE(first);
   REQUIRE(both);
   // Each ends where its checkpoint's state stands (0.03 and 0.06 s rounded to whole steps).
@@ -203,7 +203,7 @@ TEST_CASE("a run suspended with SIGTSTP leaves the suspension out of its wall ti
   // scheduler delivering the signals late.
   CHECK(held >= 0.9);
   CHECK(held < elapsed);
-  const auto cost = lbdem::scenarios::read_run_cost(dir + "/checkpoint.h5");
+  const auto cost = lbdem::run::read_run_cost(dir + "/checkpoint.h5");
   REQUIRE(cost);
   // The stepping loop's sum lies inside the whole invocation less the suspension; counted, the
   // suspension (1 s) would exceed the set-up and output left out of the sum (tenths of a second)

@@ -1,4 +1,4 @@
-// The run manifest (scenarios/common/run_manifest.hpp, run.toml): what a run tells studies and
+// The run manifest (run/run_manifest.hpp, run.toml): what a run tells studies and
 // tools in machine-readable form must be what its log and its checkpoint say, and a study's cost
 // columns must come from it.
 #include <catch2/catch.hpp>
@@ -10,12 +10,12 @@
 
 #include "core/h5.hpp"
 #include "helpers/cli.hpp"
-#include "scenarios/common/run_cost.hpp"
-#include "scenarios/common/run_manifest.hpp"
+#include "run/run_cost.hpp"
+#include "run/run_manifest.hpp"
 #include "studies/study_case.hpp"
 
 using namespace lbdem;
-using namespace lbdem::scenarios;
+using namespace lbdem::run;
 using namespace lbdem::studies;
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-// The XDMF files of a run folder as text (scenarios/common/xdmf.hpp), where no ParaView is
+// The XDMF files of a run folder as text (run/xdmf.hpp), where no ParaView is
 // needed: particle and gas grids carry the same time values, every particle grid has its vertex
 // cells and arrays, the gas grid's nodes are the cells' corners, and a snapshot from an older
 // build is described by what it holds. tests/tools/test_paraview_outputs.py opens the same files
@@ -14,7 +14,7 @@
 #include "core/h5.hpp"
 #include "helpers/cli.hpp"
 #include "helpers/csv_table.hpp"
-#include "scenarios/common/xdmf.hpp"
+#include "run/xdmf.hpp"
 
 namespace {
 
@@ -52,7 +52,7 @@ TEST_CASE("particle and gas XDMF share time values and describe every snapshot",
   REQUIRE(times.size() == 3);
   const std::string px = read_text(one + "/particles.xdmf"), gx = read_text(one + "/fluid.xdmf");
   std::vector<std::string> want;
-  for (double t : times) want.push_back(lbdem::scenarios::xdmf_time(t));
+  for (double t : times) want.push_back(lbdem::run::xdmf_time(t));
   CHECK(values_of(px, "Value") == want);  // one text per instant: one time step in ParaView
   CHECK(values_of(gx, "Value") == want);
   CHECK(std::stod(want[1]) == times[1]);  // the text reads back to the same double
@@ -126,7 +126,7 @@ TEST_CASE("particle XDMF names only what an older snapshot holds", "[scenarios][
     f.write("/id", std::vector<std::int64_t>{0, 1});
     f.commit();
   }
-  lbdem::scenarios::write_particles_xdmf(dir, {0.25});
+  lbdem::run::write_particles_xdmf(dir, {0.25});
   const std::string x = read_text(dir + "/particles.xdmf");
   CHECK(x.find("<Time Value=\"0.25\"/>") != std::string::npos);
   CHECK(x.find("NumberOfElements=\"2\" NodesPerElement=\"1\"></Topology>") != std::string::npos);

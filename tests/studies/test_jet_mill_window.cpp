@@ -12,13 +12,13 @@
 
 #include "core/config.hpp"
 #include "helpers/cli.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 #include "studies/jet_mill_study.hpp"
 #include "tools/src/run_folder.hpp"
 #include "tools/src/window_stats.hpp"
 
 using lbdem::Config;
-using lbdem::scenarios::OutputSettings;
+using lbdem::run::OutputSettings;
 using lbdem::studies::figure_window;
 using lbdem::tools::read_csv;
 using lbdem::tools::select_window;

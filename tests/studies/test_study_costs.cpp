@@ -7,7 +7,7 @@
 
 #include "core/h5.hpp"
 #include "core/phase_timer.hpp"
-#include "scenarios/common/run_cost.hpp"
+#include "run/run_cost.hpp"
 #include "studies/study_case.hpp"
 
 #include <unistd.h>
@@ -17,7 +17,7 @@
 #include <map>
 #include <sstream>
 
-using namespace lbdem::scenarios;
+using namespace lbdem::run;
 using namespace lbdem::studies;
 namespace fs = std::filesystem;
 

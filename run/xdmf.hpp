@@ -12,7 +12,7 @@
 
 #include "core/types.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 /// The text of a time value [s] in every XDMF file: 17 significant digits, which read back to the
 /// same double.
@@ -36,4 +36,4 @@ struct GasGrid {
 /// snapshot's fields as cell data (velocity, pressure, porosity, the solid mask).
 void write_fluid_xdmf(const std::string& dir, const std::vector<double>& times, const GasGrid& g);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

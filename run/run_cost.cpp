@@ -1,8 +1,8 @@
-#include "scenarios/common/run_cost.hpp"
+#include "run/run_cost.hpp"
 
 #include "core/h5.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 namespace {
 
@@ -77,4 +77,4 @@ std::optional<RunCost> read_run_cost(const std::string& checkpoint) {
   }
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

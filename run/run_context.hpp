@@ -4,7 +4,7 @@
 
 #include "core/log.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 struct RunIdentity;
 
@@ -21,4 +21,4 @@ struct RunContext {
   const RunIdentity* identity = nullptr;
 };
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

@@ -17,7 +17,7 @@
 #include "core/config.hpp"
 #include "core/h5.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 /// The checkpoint format this lbdem writes (and the one before checksums and identity, which
 /// shares the name: those checkpoints are recognised by what they lack).
@@ -67,4 +67,4 @@ struct ResumePoint {
 /// resume appends to or rewrites from (timeseries.csv, the snapshots) is missing.
 ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double end_time);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

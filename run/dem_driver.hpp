@@ -15,15 +15,15 @@
 #include "core/config.hpp"
 #include "core/time_series.hpp"
 #include "dem/dem_solver.hpp"
-#include "scenarios/common/dem_config.hpp"
-#include "scenarios/common/run_context.hpp"
-#include "scenarios/common/run_cost.hpp"
+#include "run/step_choice.hpp"
+#include "run/run_context.hpp"
+#include "run/run_cost.hpp"
 
 namespace lbdem {
 class Progress;
 }
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 /// Thrown when SIGINT/SIGTERM stopped the loop after writing a checkpoint.
 struct Interrupted : std::runtime_error {
@@ -157,4 +157,4 @@ void dem_banner(Log& log, const dem::DemSolver& s, double impact_speed, double c
                 double rayleigh_time, const std::string& where, double feed_r_min = 0,
                 double feed_r_max = 0, const DemWatch* watch = nullptr);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

@@ -26,7 +26,7 @@ class H5In;
 class H5Out;
 }  // namespace lbdem
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 /// The sums a checkpoint holds.
 struct RunCost {
@@ -62,4 +62,4 @@ std::optional<RunCost> read_run_cost(const H5In& f);
 /// The same from a checkpoint's path; nullopt also if the file cannot be read.
 std::optional<RunCost> read_run_cost(const std::string& checkpoint);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

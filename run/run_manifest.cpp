@@ -1,4 +1,4 @@
-#include "scenarios/common/run_manifest.hpp"
+#include "run/run_manifest.hpp"
 
 #include <toml++/toml.h>
 
@@ -9,7 +9,7 @@
 
 #include "core/h5.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 double RunManifest::number(const std::string& name) const {
   for (const auto& d : derived)
@@ -80,4 +80,4 @@ std::optional<RunManifest> read_run_manifest(const std::string& dir) {
   return m;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

@@ -1,10 +1,10 @@
-#include "scenarios/common/xdmf.hpp"
+#include "run/xdmf.hpp"
 
 #include <cstdio>
 
 #include "core/h5.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 namespace {
 
@@ -133,4 +133,4 @@ void write_fluid_xdmf(const std::string& dir, const std::vector<double>& times, 
   write_file_atomic(dir + "/fluid.xdmf", document("gas", grids));
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

@@ -1,4 +1,4 @@
-#include "scenarios/common/checkpoint_check.hpp"
+#include "run/checkpoint_check.hpp"
 
 #include <cstdio>
 #include <cstring>
@@ -8,9 +8,9 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 namespace fs = std::filesystem;
 
@@ -266,4 +266,4 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
   return p;
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

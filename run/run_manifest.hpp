@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/log.hpp"
-#include "scenarios/common/run_cost.hpp"
+#include "run/run_cost.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 inline constexpr const char* kRunManifest = "run.toml";
 
@@ -36,4 +36,4 @@ void write_run_manifest(const std::string& dir, const RunManifest& m);
 /// throws std::runtime_error naming the file if it cannot be parsed.
 std::optional<RunManifest> read_run_manifest(const std::string& dir);
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run

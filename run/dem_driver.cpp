@@ -1,4 +1,4 @@
-#include "scenarios/common/dem_driver.hpp"
+#include "run/dem_driver.hpp"
 
 #include "core/phase_timer.hpp"
 
@@ -14,11 +14,11 @@
 #include "core/h5.hpp"
 #include "core/progress.hpp"
 #include "core/time_series.hpp"
-#include "scenarios/common/checkpoint_check.hpp"
-#include "scenarios/common/run_manifest.hpp"
-#include "scenarios/common/xdmf.hpp"
+#include "run/checkpoint_check.hpp"
+#include "run/run_manifest.hpp"
+#include "run/xdmf.hpp"
 
-namespace lbdem::scenarios {
+namespace lbdem::run {
 
 namespace fs = std::filesystem;
 
@@ -558,4 +558,4 @@ void dem_banner(Log& log, const dem::DemSolver& s, double v, double tc, double t
   }
 }
 
-}  // namespace lbdem::scenarios
+}  // namespace lbdem::run
