@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <toml++/toml.h>
+
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
@@ -81,6 +83,39 @@ CgStats summary(const tools::RunStats& r) {
           r.m.std,
           r.std_err.stderr_mean,
           r.err.plateau && r.std_err.plateau};
+}
+
+// The first key of `want` that `have` lacks or holds otherwise, as "path = value"; empty if there
+// is none. run.end_time may differ (a level run further resumes) and so may output keys.
+std::string first_difference(const toml::node& want, const toml::node* have,
+                             const std::string& path = "") {
+  // Values compared as TOML writes them (the same value reads back the same).
+  const auto text = [](const toml::node& n) {
+    std::ostringstream o;
+    o << toml::node_view<const toml::node>{&n};
+    return o.str();
+  };
+  if (const toml::table* t = want.as_table()) {
+    const toml::table* h = have ? have->as_table() : nullptr;
+    if (!h) return path;
+    for (auto&& [key, node] : *t) {
+      const std::string sub =
+          path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
+      if (sub == "run.end_time" || sub == "output") continue;
+      if (auto d = first_difference(node, h->get(key.str()), sub); !d.empty()) return d;
+    }
+    return "";
+  }
+  if (const toml::array* a = want.as_array(); a && a->is_array_of_tables()) {
+    const toml::array* h = have ? have->as_array() : nullptr;
+    if (!h || h->size() != a->size()) return path + " (" + std::to_string(a->size()) + " tables)";
+    for (std::size_t k = 0; k < a->size(); ++k)
+      if (auto d = first_difference(*a->get(k), h->get(k), path + "[" + std::to_string(k) + "]");
+          !d.empty())
+        return d;
+    return "";
+  }
+  return have && text(*have) == text(want) ? "" : path + " = " + text(want);
 }
 
 }  // namespace
@@ -189,21 +224,36 @@ int run_cg_study(const StudyOptions& opt) {
   // against the columns its run will write, before any level runs.
   std::vector<std::string> columns;
   for (const std::size_t k : order) {
+    if (opt.no_run) break;  // compare what the folder holds
     const Level& lv = levels[k];
     const std::string dir = root + "/" + lv.name;
-    if (fs::exists(dir + "/config.toml")) {
-      if (columns.empty() && fs::exists(dir + "/timeseries.csv"))
-        columns = tools::read_csv(dir + "/timeseries.csv").names;
-      continue;
-    }
-    if (opt.no_run) continue;
+    const Config cfg = level_config(opt, lv);
     try {
-      columns = scenarios::read_as_scenario(scenario, level_config(opt, lv));
+      columns = scenarios::read_as_scenario(scenario, cfg);
     } catch (const InputError& e) {
       throw InputError(e.key(), e.value(), e.problem() + " (at level l = " + num(lv.l, "%g") + ")",
                        e.fix());
     }
+    if (!fs::exists(dir + "/config.toml")) continue;
+    // A level already in the folder resumes: it must be a run of this config as read now, every
+    // default included, not another config's left in the same --out (the default folder is
+    // shared).
+    const toml::table want = toml::parse(cfg.resolved_toml());
+    const toml::table have = toml::parse_file(dir + "/config.toml");
+    std::string d = first_difference(want, &have);
+    if (d.empty()) d = first_difference(have, &want);
+    if (!d.empty())
+      throw InputError("--out", root,
+                       "its " + lv.name + " is a run of another config (" + d +
+                           " in one of the two, not in the other)",
+                       "give another --out for this config, or remove " + dir);
   }
+  if (columns.empty() && opt.no_run)
+    for (const auto& lv : levels)
+      if (fs::exists(root + "/" + lv.name + "/timeseries.csv")) {
+        columns = tools::read_csv(root + "/" + lv.name + "/timeseries.csv").names;
+        break;
+      }
   if (!columns.empty())
     for (const auto& o : observables)
       if (std::find(columns.begin(), columns.end(), o) == columns.end())

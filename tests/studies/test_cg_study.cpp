@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -139,6 +140,21 @@ TEST_CASE(
     }
   }
   CHECK(fs::exists(out + "/cg_report.txt"));
+  // Another config into the same folder is refused, naming the key its levels' runs differ in,
+  // before anything is run or written.
+  {
+    std::ifstream in(cfg);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.replace(text.find("mass = 0.05"), 11, "mass = 0.06");
+    std::ofstream(tmp + "/other.toml") << text;
+  }
+  const auto stamp = fs::last_write_time(out + "/cg_levels.csv");
+  const auto other =
+      test::cli("study cg --config " + tmp + "/other.toml --levels 1,2 --rule hertz" +
+                " --threads 1 --out " + out);
+  CHECK(other.code == 2);
+  CHECK(other.err.find("is a run of another config (fill[0].mass") != std::string::npos);
+  CHECK(fs::last_write_time(out + "/cg_levels.csv") == stamp);
   fs::remove_all(tmp);
 }
 
