@@ -5,6 +5,52 @@
 
 namespace lbdem::run {
 
+namespace {
+
+// Populations, AA state and gas step count under /fluid of a checkpoint.
+void save_gas(H5Out& f, const lbm::LbmSolver& s) {
+  f.group("/fluid");
+  // The slots as stored (single: f - w in float, widened exactly). A build from before single
+  // precision cannot misread them: it rejects the run folder's fluid.precision key before loading.
+  f.write("/fluid/populations", s.stored_slots());
+  f.attr("precision", std::string(lbm::to_string(s.precision())), "/fluid");
+  f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");
+  f.attr("steps", std::int64_t(s.steps()), "/fluid");
+  f.attr("initial_mass", s.initial_mass(), "/fluid");
+  f.attr("exchanged_mass", s.exchanged_mass(), "/fluid");
+}
+
+void load_gas(const H5In& f, lbm::LbmSolver& s) {
+  if (!f.has("/fluid/populations"))
+    throw std::runtime_error(
+        "the checkpoint holds no gas state (/fluid); was it written by a run "
+        "without [fluid]?");
+  // Older checkpoints name the storage ("population_storage": float slots held f - w as single's
+  // do) or nothing (doubles).
+  std::string stored = "double";
+  if (f.has_attr("precision", "/fluid"))
+    stored = f.attr_string("precision", "/fluid");
+  else if (f.has_attr("population_storage", "/fluid") &&
+           f.attr_string("population_storage", "/fluid") == "float")
+    stored = "single";
+  if (stored != lbm::to_string(s.precision()))
+    throw std::runtime_error("the checkpoint holds the gas in " + stored +
+                             " precision, this run computes in " +
+                             std::string(lbm::to_string(s.precision())) +
+                             "; resume with fluid.precision = \"" + stored + "\"");
+  s.load_state(f.doubles("/fluid/populations"),
+               f.attr_int("aa_swapped", "/fluid") ? lbm::AaState::swapped : lbm::AaState::natural,
+               long(f.attr_int("steps", "/fluid")));
+  // Checkpoints from before the mass ledger: start it at the loaded mass.
+  if (f.has_attr("initial_mass", "/fluid"))
+    s.set_mass_ledger(f.attr_double("initial_mass", "/fluid"),
+                      f.attr_double("exchanged_mass", "/fluid"));
+  else
+    s.set_mass_ledger(s.total_mass(), 0.0);
+}
+
+}  // namespace
+
 CoupledGas::CoupledGas(std::unique_ptr<lbm::LbmSolver> gas, SubCycle sub, double gas_dt,
                        std::function<void(double)> before_gas_step)
     : gas_(std::move(gas)), sub_(sub), dt_(gas_dt), before_gas_step_(std::move(before_gas_step)) {}
@@ -52,7 +98,8 @@ bool CoupledGas::behind(const dem::DemSolver& s) const {
   return coupler_ ? coupler_->steps_left() > 0 : gas_->steps() < steps_due(s.steps() + 1);
 }
 
-void CoupledGas::save_interval(H5Out& f) const {
+void CoupledGas::save(H5Out& f) const {
+  save_gas(f, *gas_);
   if (!coupler_ || coupler_->steps_left() == 0) return;  // stopped between intervals
   const coupling::IntervalState st = coupler_->interval_state();
   f.group("/coupling_interval");
@@ -64,7 +111,8 @@ void CoupledGas::save_interval(H5Out& f) const {
   f.write("/coupling_interval/velocity_sum", st.velocity_sum);
 }
 
-void CoupledGas::resume(const H5In& f, dem::DemSolver& s) {
+void CoupledGas::load(const H5In& f, dem::DemSolver& s) {
+  load_gas(f, *gas_);
   // The gas leads by design (steps_due); any other count means a different time step. A coupled
   // checkpoint at a DEM step inside an interval resumes too: the gas has run the interval and the
   // particles hold its force (ParticleArrays::external, checkpointed); only a row at that

@@ -49,12 +49,14 @@ class CoupledGas {
   /// The gas stopped short of the steps the coming DEM step needs (a stop between gas steps).
   bool behind(const dem::DemSolver& s) const;
 
-  /// The state of an exchange interval stopped part-way, if one is (group /coupling_interval).
-  void save_interval(H5Out& f) const;
-  /// After the gas and the DEM were loaded: checks that the gas's step count is the one the DEM's
-  /// step count implies (any other means a different time step: std::runtime_error) and restores
-  /// an interval stopped part-way.
-  void resume(const H5In& f, dem::DemSolver& s);
+  /// Into a checkpoint: the gas (group /fluid: populations as stored, AA state, step count, mass
+  /// ledger) and the state of an exchange interval stopped part-way, if one is
+  /// (/coupling_interval).
+  void save(H5Out& f) const;
+  /// From a checkpoint, after the DEM was loaded: the gas (std::runtime_error if the checkpoint
+  /// has none or holds it in another precision), a check that its step count is the one the DEM's
+  /// implies (any other means a different time step) and an interval stopped part-way.
+  void load(const H5In& f, dem::DemSolver& s);
 
  private:
   std::unique_ptr<lbm::LbmSolver> gas_;

@@ -63,7 +63,7 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
 DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks)
     : solver_(solver), out_(out), hooks_(std::move(hooks)) {
   const double dt = solver_.settings().dt;
-  const std::int64_t cycle = std::max<std::int64_t>(1, hooks_.cycle);
+  const std::int64_t cycle = hooks_.gas ? hooks_.gas->cycle() : 1;
   const auto whole_cycles = [&](std::int64_t n) { return (n + cycle - 1) / cycle * cycle; };
   const auto steps = [&](double interval) {
     return whole_cycles(std::max<std::int64_t>(1, std::llround(interval / dt)));
@@ -431,6 +431,7 @@ void DemDriver::write_checkpoint_file(const std::string& file, double stored0, b
     save_identity(f, *identity_, std::int64_t(solver_.particles().size()),
                   final ? out_.end_time : 0.0);
   if (hooks_.save) hooks_.save(f);
+  if (hooks_.gas) hooks_.gas->save(f);
   cost_.save(f, solver_.time());
   f.commit();
 }
@@ -451,6 +452,7 @@ int DemDriver::run(const RunContext& ctx) {
     snapshot_times_ = f.doubles("/snapshot_times_s");
     solver_.load(f);
     if (hooks_.load) hooks_.load(f);
+    if (hooks_.gas) hooks_.gas->load(f, solver_);
     cost_.resume(f, solver_.time());
     ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
     const auto prev = f.doubles("/rate_reference");
@@ -473,13 +475,15 @@ int DemDriver::run(const RunContext& ctx) {
   g_old_handlers.term_ = std::signal(SIGTERM, on_stop_signal);
   // A stop waits for the next cycle boundary (at most cycle - 1 DEM steps): only there do all the
   // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
-  const std::int64_t cycle = std::max<std::int64_t>(1, hooks_.cycle);
+  const std::int64_t cycle = hooks_.gas ? hooks_.gas->cycle() : 1;
   while (solver_.steps() < last_step_) {
-    // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (unfinished).
+    // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (the gas then
+    // stands behind the coming DEM step; its checkpoint carries the rest).
     bool stop = g_stop_signal && solver_.steps() % cycle == 0;
     if (!stop) {
       if (hooks_.before_step) hooks_.before_step(solver_);
-      stop = g_stop_signal && hooks_.unfinished && hooks_.unfinished(solver_);
+      if (hooks_.gas) hooks_.gas->advance(solver_, stop_requested);
+      stop = g_stop_signal && hooks_.gas && hooks_.gas->behind(solver_);
     }
     if (stop) {
       extra_row_ = extra_snapshot_ = false;

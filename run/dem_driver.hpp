@@ -16,6 +16,7 @@
 #include "core/time_series.hpp"
 #include "dem/dem_solver.hpp"
 #include "run/step_choice.hpp"
+#include "run/coupled_gas.hpp"
 #include "run/run_context.hpp"
 #include "run/run_cost.hpp"
 
@@ -86,9 +87,12 @@ DemWatch dem_watch(const StepChoice& step, const dem::DemSolver& s,
 /// Scenario-specific parts of the loop.
 struct DriverHooks {
   std::function<void(dem::DemSolver&)> before_step;  // inflow, outlet, motion, ...
-  /// True when before_step returned early on a stop (stop_requested) with work of the coming DEM
-  /// step left: the loop then checkpoints there, and the scenario's save and load carry the rest.
-  std::function<bool(const dem::DemSolver&)> unfinished;
+  /// The gas of a run with one (null without): the loop advances it after before_step, by the
+  /// steps that come before each DEM step or, coupled, by the exchange interval that starts there
+  /// (coupled_gas.hpp); keeps its output, checkpoint and end instants on whole coupling cycles,
+  /// where gas and DEM stand at the same time; and saves and loads it with every checkpoint. A stop
+  /// is taken between gas steps (stop_requested): the loop then checkpoints the gas part-way.
+  CoupledGas* gas = nullptr;
   std::vector<std::string> extra_columns;  // extra timeseries.csv columns (SI)
   std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
   std::function<void(H5Out&)> save;  // scenario state into the checkpoint
@@ -99,10 +103,6 @@ struct DriverHooks {
   /// Watchdog, called before anything is written at a step (row, snapshot, checkpoint, signal
   /// stop): a message stops the run with Diverged, keeping the last good output.
   std::function<std::optional<std::string>(const dem::DemSolver&)> health;
-  /// DEM steps per coupling cycle (> 1 when another solver steps once per `cycle` DEM steps):
-  /// output, checkpoint and end instants are rounded up to whole cycles, where every solver
-  /// stands at the same time.
-  std::int64_t cycle = 1;
   /// The DEM's own watchdog (off unless the scenario sets it: dem_watch).
   DemWatch watch;
 };

@@ -466,7 +466,6 @@ int BoxScenario::run(const RunContext& ctx) {
   DriverHooks hooks;
   hooks.before_step = [this, &ctx](dem::DemSolver& s) {
     before_step(s);
-    if (gas_) gas_->advance(s, stop_requested);
     if (inflow_.behind_at >= 0 && !inflow_.behind_warned && ctx.log) {
       inflow_.behind_warned = true;
       ctx.log->line("warning: inflow: the feed region is full at t = " +
@@ -487,7 +486,7 @@ int BoxScenario::run(const RunContext& ctx) {
                     "); clipped there. A wider coupling.kernel_width smooths the bed");
     }
   };
-  hooks.unfinished = [this](const dem::DemSolver& s) { return gas_ && gas_->behind(s); };
+  hooks.gas = gas_.get();
   hooks.extra_columns = box_columns();
   hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
   hooks.save = [this](H5Out& f) {
@@ -495,19 +494,11 @@ int BoxScenario::run(const RunContext& ctx) {
     os << rng_;
     f.attr("rng_state", os.str());
     f.attr("inflow_inserted_kg", inflow_.inserted);
-    if (gas_) {
-      save_fluid(f, gas_->gas());
-      gas_->save_interval(f);  // stopped inside an interval's gas steps
-    }
   };
   hooks.load = [this](const H5In& f) {
     std::istringstream is(f.attr_string("rng_state"));
     is >> rng_;
     inflow_.inserted = f.attr_double("inflow_inserted_kg");
-    if (gas_) {
-      load_fluid(f, gas_->gas());
-      gas_->resume(f, *solver_);
-    }
   };
   if (gas_) {
     hooks.snapshot = [this](const std::string& dir, const std::vector<double>& times) {
@@ -523,7 +514,6 @@ int BoxScenario::run(const RunContext& ctx) {
         }
       return error;
     };
-    hooks.cycle = cycle();
   }
   hooks.watch = watch();
   DemDriver driver(*solver_, out_, hooks);

@@ -135,47 +135,6 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
   write_fluid_xdmf(dir, times, GasGrid{c.lo, c.dx, c.cells});
 }
 
-void save_fluid(H5Out& f, const lbm::LbmSolver& s) {
-  f.group("/fluid");
-  // The slots as stored (single: f - w in float, widened exactly). A build from before single
-  // precision cannot misread them: it rejects the run folder's fluid.precision key before loading.
-  f.write("/fluid/populations", s.stored_slots());
-  f.attr("precision", std::string(lbm::to_string(s.precision())), "/fluid");
-  f.attr("aa_swapped", std::int64_t(s.state() == lbm::AaState::swapped ? 1 : 0), "/fluid");
-  f.attr("steps", std::int64_t(s.steps()), "/fluid");
-  f.attr("initial_mass", s.initial_mass(), "/fluid");
-  f.attr("exchanged_mass", s.exchanged_mass(), "/fluid");
-}
-
-void load_fluid(const H5In& f, lbm::LbmSolver& s) {
-  if (!f.has("/fluid/populations"))
-    throw std::runtime_error(
-        "the checkpoint holds no gas state (/fluid); was it written by a run "
-        "without [fluid]?");
-  // Older checkpoints name the storage ("population_storage": float slots held f - w as single's
-  // do) or nothing (doubles).
-  std::string stored = "double";
-  if (f.has_attr("precision", "/fluid"))
-    stored = f.attr_string("precision", "/fluid");
-  else if (f.has_attr("population_storage", "/fluid") &&
-           f.attr_string("population_storage", "/fluid") == "float")
-    stored = "single";
-  if (stored != lbm::to_string(s.precision()))
-    throw std::runtime_error("the checkpoint holds the gas in " + stored +
-                             " precision, this run computes in " +
-                             std::string(lbm::to_string(s.precision())) +
-                             "; resume with fluid.precision = \"" + stored + "\"");
-  s.load_state(f.doubles("/fluid/populations"),
-               f.attr_int("aa_swapped", "/fluid") ? lbm::AaState::swapped : lbm::AaState::natural,
-               long(f.attr_int("steps", "/fluid")));
-  // Checkpoints from before the mass ledger: start it at the loaded mass.
-  if (f.has_attr("initial_mass", "/fluid"))
-    s.set_mass_ledger(f.attr_double("initial_mass", "/fluid"),
-                      f.attr_double("exchanged_mass", "/fluid"));
-  else
-    s.set_mass_ledger(s.total_mass(), 0.0);
-}
-
 std::optional<std::string> check_fluid_health(const lbm::LbmSolver& s, const FluidConfig& c,
                                               double time, std::int64_t dem_step) {
   const auto bad = s.find_unhealthy(1 - kHealthyDensity, 1 + kHealthyDensity, kHealthySpeed);

@@ -41,10 +41,6 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
                           const std::vector<double>& times,
                           const std::vector<SnapshotArray>& extra = {});
 
-/// Populations, AA state and gas step count under /fluid of a checkpoint.
-void save_fluid(H5Out& f, const lbm::LbmSolver& s);
-void load_fluid(const H5In& f, lbm::LbmSolver& s);
-
 /// Watchdog limits [lattice units]: rho within +-20 % of the reference, several times the 3 %
 /// that check_stability allows for the static Dp (plus ~4 % dynamic pressure at the 0.3 Mach
 /// limit), so a healthy run never trips it; and speed below 0.5 (Mach 0.87), where the

@@ -1,7 +1,7 @@
 // run::CoupledGas without an exchange: the gas leads the DEM by the steps the sub-cycle gives
 // (run/clock.hpp), a stop between gas steps leaves it behind and the next call completes the
-// step, ramps see the time each gas step starts at, and a resume with a gas step count the DEM's
-// does not imply is refused. The coupled intervals are checked end to end by the box's resume
+// step, ramps see the time each gas step starts at, and a checkpoint whose gas step count the
+// DEM's does not imply is refused. The coupled intervals are checked end to end by the box's resume
 // tests (tests/scenarios).
 #include <catch2/catch.hpp>
 
@@ -75,19 +75,21 @@ TEST_CASE("coupled gas: four DEM steps per gas step, and a stop leaves it behind
   }
   CHECK(counts == std::vector<std::int64_t>{1, 1, 1, 1, 2, 2, 2, 2});
 
-  // A checkpoint whose gas stands where the DEM's count puts it resumes; one step more is refused.
+  // A checkpoint of the gas where the DEM's count puts it (2 gas steps at DEM step 8) loads; with
+  // the DEM one step further (due: 3) the same gas is refused.
   namespace fs = std::filesystem;
   const std::string file =
       (fs::temp_directory_path() / ("lbdem_coupled_gas_" + std::to_string(::getpid()) + ".h5"))
           .string();
   {
     H5Out f(file);
-    f.attr("note", std::string("no interval"));
+    gas.save(f);
     f.commit();
   }
   const H5In in(file);
-  CHECK_NOTHROW(gas.resume(in, dem));  // DEM at step 8, gas at 2 = steps_due(8)
-  gas.gas().step();
-  CHECK_THROWS_AS(gas.resume(in, dem), std::runtime_error);
+  CHECK_NOTHROW(gas.load(in, dem));
+  CHECK(gas.gas().steps() == 2);
+  dem.step();
+  CHECK_THROWS_AS(gas.load(in, dem), std::runtime_error);
   fs::remove(file);
 }
