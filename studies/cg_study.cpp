@@ -24,15 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num(double v, const char* f = "%.4g") {
-  if (!std::isfinite(v)) return "";
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 std::string full(double v) {
-  return num(v, "%.17g");
+  return fmt(v, "%.17g");
 }
 
 std::string joined(const std::vector<std::string>& words) {
@@ -143,7 +136,7 @@ CgDifference cg_difference(double value, double err, double ref, double ref_err,
 }
 
 std::string cg_case_name(double l) {
-  std::string s = "cg" + num(l, "%g");
+  std::string s = "cg" + fmt(l, "%g");
   std::replace(s.begin(), s.end(), '.', '_');
   return s;
 }
@@ -165,20 +158,20 @@ int run_cg_study(const StudyOptions& opt) {
     throw InputError("--cases", joined(opt.cases), "the cg study's cases are its levels",
                      "give the size factors in --levels, e.g. --levels 1,2,4");
   if (opt.levels.size() < 2)
-    throw InputError("--levels", opt.levels.empty() ? "(none)" : num(opt.levels[0], "%g"),
+    throw InputError("--levels", opt.levels.empty() ? "(none)" : fmt(opt.levels[0], "%g"),
                      "a comparison needs at least two size factors",
                      "give e.g. --levels 1,2,4 (the smallest is the reference)");
   std::vector<Level> levels;
   for (const double l : opt.levels) {
     if (!(l >= 1) || !std::isfinite(l))
-      throw InputError("--levels", num(l, "%g"),
+      throw InputError("--levels", fmt(l, "%g"),
                        "a size factor is at least 1 (a parcel stands for l^3 originals)",
                        "give size factors >= 1, e.g. --levels 1,2,4");
     Level lv{l, cg_case_name(l), {"coarse_grain.size_factor=" + full(l)}};
     if (!opt.rule.empty()) lv.sets.push_back("coarse_grain.rule=" + opt.rule);
     for (const auto& other : levels)
       if (other.name == lv.name)
-        throw InputError("--levels", num(l, "%g"), "given twice", "give each size factor once");
+        throw InputError("--levels", fmt(l, "%g"), "given twice", "give each size factor once");
     levels.push_back(lv);
   }
   for (const auto& s : opt.sets) {
@@ -192,7 +185,7 @@ int run_cg_study(const StudyOptions& opt) {
   }
   const double tolerance = std::isnan(opt.tolerance) ? kCgTolerance : opt.tolerance;
   if (!(tolerance >= 0))
-    throw InputError("--tolerance", num(opt.tolerance, "%g"), "a relative difference is at least 0",
+    throw InputError("--tolerance", fmt(opt.tolerance, "%g"), "a relative difference is at least 0",
                      "give e.g. --tolerance 0.05 (5 %)");
   const Config base = level_config(opt, levels.front());
   const std::string scenario = base.get_string("scenario", "");
@@ -206,8 +199,8 @@ int run_cg_study(const StudyOptions& opt) {
   const double to = opt.window_to > 0 ? opt.window_to : end_time;
   if (!(from < end_time))
     throw InputError(
-        "--from", num(from, "%g"),
-        "the window starts at or after the runs' end, run.end_time = " + num(end_time, "%g") + " s",
+        "--from", fmt(from, "%g"),
+        "the window starts at or after the runs' end, run.end_time = " + fmt(end_time, "%g") + " s",
         "give --from below it, or a later --end-time");
   const std::vector<std::string> observables =
       opt.observables.empty() ? cg_default_observables(scenario) : opt.observables;
@@ -231,7 +224,7 @@ int run_cg_study(const StudyOptions& opt) {
     try {
       columns = scenarios::read_as_scenario(scenario, cfg);
     } catch (const InputError& e) {
-      throw InputError(e.key(), e.value(), e.problem() + " (at level l = " + num(lv.l, "%g") + ")",
+      throw InputError(e.key(), e.value(), e.problem() + " (at level l = " + fmt(lv.l, "%g") + ")",
                        e.fix());
     }
     if (!fs::exists(dir + "/config.toml")) continue;
@@ -315,28 +308,28 @@ int run_cg_study(const StudyOptions& opt) {
       !opt.rule.empty() ? opt.rule
                         : base.section("coarse_grain").get_string("rule", "(the default rule)");
   text << "coarse-graining report: " << opt.config << " (" << scenario << "), rule " << rule
-       << ", window " << num(from, "%g") << "-" << num(to, "%g") << " s\n";
+       << ", window " << fmt(from, "%g") << "-" << fmt(to, "%g") << " s\n";
   text << "reference: "
-       << (ref ? ref->level->name + " (l = " + num(ref->level->l, "%g") + ")"
+       << (ref ? ref->level->name + " (l = " + fmt(ref->level->l, "%g") + ")"
                : std::string("none yet (no level has rows in the window)"))
-       << "; verdicts: same = |z| <= " << num(kCgSigma, "%g")
+       << "; verdicts: same = |z| <= " << fmt(kCgSigma, "%g")
        << " (no difference the statistics resolve), close = resolved but within "
-       << num(100 * tolerance, "%g") << " %, differs = neither\n\n";
+       << fmt(100 * tolerance, "%g") << " %, differs = neither\n\n";
   text << "level     parcels   simulated s   wall s per simulated s   speed-up\n";
   for (const auto& r : results) {
     double parcels = std::nan("");
     if (const auto m = run::read_run_manifest(r.dir)) parcels = m->number("particles");
     const PartCosts cost = part_costs(r.dir);
-    lv_csv << r.level->name << "," << num(r.level->l, "%g") << "," << num(parcels, "%.0f") << ","
-           << num(r.simulated) << "," << (cost.total > 0 ? num(cost.total) : "") << ","
+    lv_csv << r.level->name << "," << fmt(r.level->l, "%g") << "," << fmt(parcels, "%.0f") << ","
+           << fmt(r.simulated) << "," << (cost.total > 0 ? fmt(cost.total) : "") << ","
            << speedup_columns(r.dir, ref ? ref->dir : std::string()) << "\n";
     const PartCosts ref_cost = ref ? part_costs(ref->dir) : PartCosts{};
     char line[160];
     std::snprintf(
         line, sizeof line, "%-8s %9s %13s %24s %10s\n", r.level->name.c_str(),
-        num(parcels, "%.0f").c_str(), num(r.simulated).c_str(),
-        cost.total > 0 ? num(cost.total).c_str() : "-",
-        cost.total > 0 && ref_cost.total > 0 ? num(ref_cost.total / cost.total).c_str() : "-");
+        fmt(parcels, "%.0f").c_str(), fmt(r.simulated).c_str(),
+        cost.total > 0 ? fmt(cost.total).c_str() : "-",
+        cost.total > 0 && ref_cost.total > 0 ? fmt(ref_cost.total / cost.total).c_str() : "-");
     text << line;
   }
   for (std::size_t o = 0; o < observables.size(); ++o) {
@@ -350,9 +343,9 @@ int run_cg_study(const StudyOptions& opt) {
         continue;
       }
       const CgStats s = summary(r.stats[o]);
-      ob_csv << observables[o] << "," << r.level->name << "," << num(r.level->l, "%g") << ","
-             << num(from, "%g") << "," << num(to, "%g") << "," << s.samples << "," << num(s.mean)
-             << "," << num(s.mean_err) << "," << num(s.fluctuation) << "," << num(s.fluctuation_err)
+      ob_csv << observables[o] << "," << r.level->name << "," << fmt(r.level->l, "%g") << ","
+             << fmt(from, "%g") << "," << fmt(to, "%g") << "," << s.samples << "," << fmt(s.mean)
+             << "," << fmt(s.mean_err) << "," << fmt(s.fluctuation) << "," << fmt(s.fluctuation_err)
              << "," << (s.plateau ? "yes" : "no");
       std::string vs_mean = "reference", vs_fluct = "reference";
       if (ref && &r != ref) {
@@ -360,12 +353,12 @@ int run_cg_study(const StudyOptions& opt) {
         const CgDifference dm = cg_difference(s.mean, s.mean_err, q.mean, q.mean_err, tolerance);
         const CgDifference df = cg_difference(s.fluctuation, s.fluctuation_err, q.fluctuation,
                                               q.fluctuation_err, tolerance);
-        ob_csv << "," << num(dm.diff) << "," << num(dm.rel) << "," << num(dm.z) << "," << dm.verdict
-               << "," << num(df.diff) << "," << num(df.rel) << "," << num(df.z) << "," << df.verdict
+        ob_csv << "," << fmt(dm.diff) << "," << fmt(dm.rel) << "," << fmt(dm.z) << "," << dm.verdict
+               << "," << fmt(df.diff) << "," << fmt(df.rel) << "," << fmt(df.z) << "," << df.verdict
                << "\n";
         const auto vs = [](const CgDifference& d) {
           return (d.verdict.empty() ? std::string("no error") : d.verdict) + " (" +
-                 num(100 * d.rel, "%+.3g") + " %, " + num(d.z, "%+.2g") + ")";
+                 fmt(100 * d.rel, "%+.3g") + " %, " + fmt(d.z, "%+.2g") + ")";
         };
         vs_mean = vs(dm), vs_fluct = vs(df);
       } else {
@@ -374,8 +367,8 @@ int run_cg_study(const StudyOptions& opt) {
       char line[256];
       std::snprintf(line, sizeof line, "%-8s %8zu   %-24s %-24s %-29s %s%s\n",
                     r.level->name.c_str(), s.samples,
-                    (num(s.mean) + " +- " + num(s.mean_err)).c_str(),
-                    (num(s.fluctuation) + " +- " + num(s.fluctuation_err)).c_str(), vs_mean.c_str(),
+                    (fmt(s.mean) + " +- " + fmt(s.mean_err)).c_str(),
+                    (fmt(s.fluctuation) + " +- " + fmt(s.fluctuation_err)).c_str(), vs_mean.c_str(),
                     vs_fluct.c_str(),
                     s.plateau ? "" : "  [errors without a blocking plateau: may be too small]");
       text << line;

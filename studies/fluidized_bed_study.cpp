@@ -47,12 +47,6 @@ const std::vector<Case>& cases() {
   return c;
 }
 
-std::string fmt(double v, const char* f = "%.4g") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 }  // namespace
 
 int run_fluidized_bed_study(const StudyOptions& opt) {

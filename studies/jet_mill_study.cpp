@@ -77,13 +77,6 @@ FigureWindow figure_window(double spin_up, bool quick, double row_interval) {
 
 namespace {
 
-std::string fmt(double v, const char* f = "%.4g") {
-  if (!std::isfinite(v)) return "";
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 // A table the tools wrote (with its text cells), or an empty one where there is no such file.
 tools::Table table_or_empty(const std::string& path) {
   if (!fs::exists(path)) return {};

@@ -76,12 +76,6 @@ const std::vector<Case>& cases() {
   return c;
 }
 
-std::string fmt(double v, const char* f = "%.4g") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 }  // namespace
 
 TorqueSummary summarize_torque(const std::vector<double>& t, const std::vector<double>& q,

@@ -267,6 +267,13 @@ std::string speedup_columns(const std::string& dir, const std::string& ref_dir, 
   return out + "," + bound + "," + (std::isnan(from) ? std::string() : num(from));
 }
 
+std::string fmt(double v, const char* format) {
+  if (!std::isfinite(v)) return "";
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
 std::string shell_quoted(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);

@@ -18,6 +18,10 @@ struct StudyCase {
   std::vector<std::string> sets;       // --set overrides of the case
 };
 
+/// A number for a study table, printf-formatted (default 4 significant digits); empty where it is
+/// not finite (a figure a case does not have yet).
+std::string fmt(double v, const char* format = "%.4g");
+
 /// A shell word for a study's std::system calls: single quotes, each ' inside written as '\''.
 std::string shell_quoted(const std::string& s);
 
