@@ -212,9 +212,9 @@ int run_cg_study(const StudyOptions& opt) {
                    [&](std::size_t a, std::size_t b) { return levels[a].l > levels[b].l; });
   const std::string root = opt.out.empty() ? "runs/studies/cg" : opt.out;
 
-  // Each level that starts anew is read as the run command will read it (a rule that refuses the
-  // contact law, a grid that a level's kernel does not fit), and the observables are checked
-  // against the columns its run will write, before any level runs.
+  // Each level is read as the run command will read it (a rule that refuses the contact law, a
+  // grid that a level's kernel does not fit), and the observables are checked against the columns
+  // its run will write, before any level runs.
   std::vector<std::string> columns;
   for (const std::size_t k : order) {
     if (opt.no_run) break;  // compare what the folder holds
