@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -379,6 +380,27 @@ int run_cg_study(const StudyOptions& opt) {
   write_file_atomic(root + "/cg_report.txt", text.str());
   std::cout << text.str() << "\ntables: " << fs::absolute(root + "/cg_levels.csv").string() << ", "
             << fs::absolute(root + "/cg_observables.csv").string() << "\n";
+  // Per observable, the series and spectra of every level with statistics, as lbdem-compare-runs
+  // writes them (ROOT/OBSERVABLE_stats.csv, _spectra.csv), and their figure
+  // (tools/compare_runs.py).
+  const std::string python = LBDEM_PYTHON;
+  for (std::size_t o = 0; o < observables.size(); ++o) {
+    std::vector<tools::RunStats> series;
+    for (const auto& r : results)
+      if (!r.stats.empty()) series.push_back(r.stats[o]);
+    if (series.empty()) continue;
+    const std::string prefix = root + "/" + observables[o];
+    tools::write_comparison(prefix, observables[o], series);
+    if (opt.no_plots || python.empty()) continue;
+    const std::string plot =
+        shell_quoted(python) + " " +
+        shell_quoted(std::string(LBDEM_SOURCE_DIR) + "/tools/compare_runs.py") + " " +
+        shell_quoted(prefix) + " > /dev/null";
+    if (std::system(plot.c_str()) != 0)
+      std::cerr << "warning: the plot failed (" << plot << ")\n";
+    else
+      std::cout << "plot: " << fs::absolute(prefix + ".png").string() << "\n";
+  }
   return 0;
 }
 

@@ -140,6 +140,12 @@ TEST_CASE(
     }
   }
   CHECK(fs::exists(out + "/cg_report.txt"));
+  // Each observable's series of both levels, as lbdem-compare-runs writes them for its figure.
+  const auto series = tools::read_csv(out + "/potential_energy_J_stats.csv", true);
+  REQUIRE(series.rows() == 2);
+  CHECK(series.cell("label", 0) == "cg1");
+  CHECK(series.cell("label", 1) == "cg2");
+  CHECK(fs::exists(out + "/kinetic_energy_J_spectra.csv"));
   // Another config into the same folder is refused, naming the key its levels' runs differ in,
   // before anything is run or written.
   {
