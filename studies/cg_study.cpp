@@ -70,6 +70,14 @@ void check_config(const Config& cfg) {
                      "fill by mass ([[fill]] with mass = M [kg]) for a coarse-graining study");
 }
 
+// One observable at one level, over the statistics window.
+struct CgStats {
+  std::size_t samples = 0;
+  double mean = 0, mean_err = 0;                // window mean and its standard error
+  double fluctuation = 0, fluctuation_err = 0;  // sample standard deviation and its error
+  bool plateau = true;  // both errors reached a blocking plateau (else they may be too small)
+};
+
 CgStats summary(const tools::RunStats& r) {
   return {r.m.n,
           r.m.mean,

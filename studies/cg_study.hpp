@@ -12,14 +12,6 @@
 
 namespace lbdem::studies {
 
-/// One observable at one level, over the statistics window.
-struct CgStats {
-  std::size_t samples = 0;
-  double mean = 0, mean_err = 0;                // window mean and its standard error
-  double fluctuation = 0, fluctuation_err = 0;  // sample standard deviation and its error
-  bool plateau = true;  // both errors reached a blocking plateau (else they may be too small)
-};
-
 /// A level's value against the reference's: the difference, relative to the reference's value,
 /// in units of the combined standard error, and the verdict: "same" (|z| <= kCgSigma: no
 /// difference the statistics can resolve), "close" (resolved, but within `tolerance` of the

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace lbdem::tools {
 
 /// A user-facing error: the tools print it as one line and exit with kToolErrorExit.
@@ -88,13 +90,17 @@ double snapshot_mass(const RunFolder& run, double t);
 /// in for snapshot_mass in a folder of kept small outputs (no snapshots).
 double ledger_mass(const RunFolder& run, double t);
 
-/// Runs body() and maps ToolError to one line "tool: message" on stderr with kToolErrorExit, any
+/// Runs body() and maps ToolError, and an output that cannot be written (a missing folder, a full
+/// disk: "cannot write PATH: why"), to one line "tool: message" on stderr with kToolErrorExit, any
 /// other exception to "tool: failed: message" with exit 1.
 template <class Body>
 int guarded_main(const char* tool, Body&& body) {
   try {
     return body();
   } catch (const ToolError& e) {
+    std::cerr << tool << ": " << e.what() << "\n";
+    return kToolErrorExit;
+  } catch (const WriteError& e) {
     std::cerr << tool << ": " << e.what() << "\n";
     return kToolErrorExit;
   } catch (const std::exception& e) {
