@@ -153,15 +153,17 @@ inline void interacting_pairs(const ParticleArrays& p, const PairList& pl, const
   }
 }
 
-/// The pair pass of a law with a lane form (pair_lanes.hpp) over the rows of blocks [b0, b1): the
-/// distance loop sends each touching pair to the lanes (others, a contact that ends this step,
-/// take the scalar kernel), the lanes evaluate the law, and a last loop over the touching pairs,
-/// in pair order, books them and adds their forces: to the rows' sums, after the scalar ones, and
-/// to the j side.
-template <class Normal, class Rolling, class Table>
+/// The pair pass in lanes (pair_lanes.hpp) over the rows of blocks [b0, b1): the distance loop
+/// sends each touching pair to the lanes (the others, a contact that ends this step or a cohesive
+/// pair apart, take the scalar kernel), the lanes evaluate the law, and a last loop over the
+/// touching pairs, in pair order, books them and adds their forces: to the rows' sums, after the
+/// scalar ones, and to the j side.
+template <class Table>
 void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted& pr,
                      const DemSettings& s, PairList& pl, double time, RowSums& sums,
                      EnergyRates* rates, std::size_t b0, std::size_t b1) {
+  using Law = typename Table::law_type;
+  using Rolling = typename Law::Rolling;
   const double range = tab.range, dt = s.dt;
   const Domain& dom = s.domain;
   const bool rows = s.collisions.rows;
@@ -184,7 +186,8 @@ void pair_rows_lanes(const Table& tab, const ParticleArrays& p, const Predicted&
       sums.t[i] = t;
     }
     if (!buf.k.empty())
-      contact_lanes<Normal, Rolling>(tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), dt, buf);
+      contact_lanes<typename Law::Normal, Rolling, typename Law::Cohesion>(
+          tab.particle(0, 0), p, pr.v, pr.w, pl.history.data(), pl.rolling.data(), dt, buf);
     for (std::size_t q = 0; q < buf.k.size(); ++q) {
       const std::size_t k = std::size_t(buf.k[q]), i = std::size_t(buf.i[q]);
       const Vec3 force(buf.fx[q], buf.fy[q], buf.fz[q]), tc(buf.cx[q], buf.cy[q], buf.cz[q]);
@@ -237,17 +240,11 @@ template <class Table>
 [[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted pr,
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  EnergyRates* rates, std::size_t b0, std::size_t b1) {
-  using Law = typename Table::law_type;
-  if constexpr (!Law::Cohesion::active &&
-                (!Law::Rolling::active ||
-                 std::is_same_v<typename Law::Rolling, ConstantTorqueRolling>)) {
-    // One parameter set (the lanes take it as constants), and indices the lanes' 32-bit gathers
-    // reach (4 per pair, 3 per particle).
-    if (tab.n_materials == 1 && pl.size() < (std::size_t(1) << 29) &&
-        p.size() < (std::size_t(1) << 29))
-      return pair_rows_lanes<typename Law::Normal, typename Law::Rolling>(tab, p, pr, s, pl, time,
-                                                                          sums, rates, b0, b1);
-  }
+  // One parameter set (the lanes take it as constants), and indices the lanes' 32-bit gathers
+  // reach (4 per pair, 3 per particle).
+  if (tab.n_materials == 1 && pl.size() < (std::size_t(1) << 29) &&
+      p.size() < (std::size_t(1) << 29))
+    return pair_rows_lanes(tab, p, pr, s, pl, time, sums, rates, b0, b1);
   const double range = tab.range;
   const Domain& dom = s.domain;
   const std::size_t n = p.size();

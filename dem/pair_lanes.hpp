@@ -1,7 +1,8 @@
 #pragma once
-// The Hertz-Mindlin and linear laws without cohesion, with no rolling model or the
-// constant-torque one, evaluated over a block's touching pairs in SIMD lanes (docs/performance.md
-// has the measurements). The scalar law (contact_law.hpp) is bound by its dependency chain, three
+// The Hertz-Mindlin and linear laws, with any rolling model (none, constant torque, EPSD) and with
+// or without van der Waals cohesion, evaluated over a block's touching pairs in SIMD lanes
+// (docs/performance.md has the measurements); pairs apart but within the cohesion's reach take the
+// scalar law. The scalar law (contact_law.hpp) is bound by its dependency chain, three
 // roots and two divisions in series per contact; here each lane takes one contact, branch-free:
 // both sides of the sliding test are computed and selected. The arithmetic is the scalar law's,
 // term by term (contact_law.hpp gives the physics and the energy bookkeeping), so the results agree
@@ -25,7 +26,7 @@ struct LaneBuffer {
   // the normal force, the normal and tangential relative speeds (impact record) and the overlap.
   std::vector<double> fx, fy, fz, cx, cy, cz, ai, aj;
   std::vector<double> p_nd, p_td, e_sl, e_st, u_el, fn, vn, vt, delta;
-  std::vector<double> mx, my, mz, e_ro;  // rolling torque on i and its loss (constant torque)
+  std::vector<double> mx, my, mz, e_ro;  // rolling torque on i and its loss
 
   void clear() {
     k.clear(), i.clear(), j.clear(), dx.clear(), dy.clear(), dz.clear(), dist.clear();
@@ -44,21 +45,30 @@ struct LaneBuffer {
 };
 
 /// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
-/// pair, updating the tangential springs in `history` and writing the results into `b`. Normal:
-/// HertzMindlin or LinearSpringDashpot; Rolling: NoRolling or ConstantTorqueRolling
-/// (rolling_resistance.hpp).
-template <class Normal, class Rolling>
-void contact_lanes(const typename ContactLaw<Normal, Rolling, NoCohesion>::Params& prm,
+/// pair, updating the tangential springs in `history` (and the rolling springs in `rolling` for
+/// EPSD) and writing the results into `b`. Normal: HertzMindlin or LinearSpringDashpot; Rolling:
+/// NoRolling, ConstantTorqueRolling or EpsdRolling (rolling_resistance.hpp); Cohesion: NoCohesion
+/// or VanDerWaals (van_der_waals.hpp).
+template <class Normal, class Rolling, class Cohesion>
+void contact_lanes(const typename ContactLaw<Normal, Rolling, Cohesion>::Params& prm,
                    const ParticleArrays& p, const std::vector<Vec3>& v_pred,
-                   const std::vector<Vec3>& w_pred, SpringHistory* history, double dt,
-                   LaneBuffer& b) {
+                   const std::vector<Vec3>& w_pred, SpringHistory* history, RollingHistory* rolling,
+                   double dt, LaneBuffer& b) {
   constexpr bool kHertz = std::is_same_v<Normal, HertzMindlin>;
   static_assert(kHertz || std::is_same_v<Normal, LinearSpringDashpot>);
-  constexpr bool kRolling = Rolling::active;
-  static_assert(!kRolling || std::is_same_v<Rolling, ConstantTorqueRolling>);
+  constexpr bool kTorque = std::is_same_v<Rolling, ConstantTorqueRolling>;
+  constexpr bool kEpsd = std::is_same_v<Rolling, EpsdRolling>;
+  static_assert(kTorque || kEpsd || std::is_same_v<Rolling, NoRolling>);
+  constexpr bool kVdw = std::is_same_v<Cohesion, VanDerWaals>;
+  static_assert(kVdw || std::is_same_v<Cohesion, NoCohesion>);
   b.size_results();
   double mu_r = 0, arm = 0;
-  if constexpr (kRolling) mu_r = prm.rolling.mu_r, arm = prm.rolling.arm_factor;
+  if constexpr (kTorque || kEpsd) mu_r = prm.rolling.mu_r, arm = prm.rolling.arm_factor;
+  // Van der Waals in contact: the gap is clamped to h_min (van_der_waals.hpp).
+  double hamaker = 0, h_min = 0, h_max = 0;
+  if constexpr (kVdw)
+    hamaker = prm.cohesion.hamaker, h_min = prm.cohesion.h_min, h_max = prm.cohesion.h_max;
+  double* __restrict RH = reinterpret_cast<double*>(rolling);  // theta (3) and kr per contact
   const double* IN = p.inertia.data();
   double* __restrict MX = b.mx.data();
   double* __restrict MY = b.my.data();
@@ -127,6 +137,16 @@ void contact_lanes(const typename ContactLaw<Normal, Rolling, NoCohesion>::Param
     const double ux = V[a3] - V[b3] + (hy_ * nz - hz_ * ny),
                  uy = V[a3 + 1] - V[b3 + 1] + (hz_ * nx - hx_ * nz),
                  uz = V[a3 + 2] - V[b3 + 2] + (hx_ * ny - hy_ * nx);
+    // Cohesion in contact (the gap -delta < 0 <= h_max): the pull at h = max(gap, h_min), its
+    // potential continued linearly below h_min.
+    double f_coh = 0, u_coh = 0;
+    if constexpr (kVdw) {
+      const double gap = -delta, h = gap > h_min ? gap : h_min;
+      const double c = hamaker * r_star / 6.0, f = c / (h * h);
+      const double u = -c * (1.0 / h - 1.0 / h_max) - (gap < h_min ? f * (h_min - gap) : 0.0);
+      f_coh = hamaker > 0 ? f : 0.0;
+      u_coh = hamaker > 0 ? u : 0.0;
+    }
     // Hertz normal force with Tsuji damping; Mindlin's k_t.
     double kn, f_el, kt, u_n;
     if constexpr (kHertz) {
@@ -180,19 +200,20 @@ void contact_lanes(const typename ContactLaw<Normal, Rolling, NoCohesion>::Param
     const double ft0 = slide ? g0 : d0, ft1 = slide ? g1 : d1, ft2 = slide ? g2 : d2;
     x0 = slide ? y0 : x0, x1 = slide ? y1 : x1, x2 = slide ? y2 : x2;
     H[hk] = x0, H[hk + 1] = x1, H[hk + 2] = x2, H[hk + 3] = kt;
-    FX[q] = -fnv * nx + ft0, FY[q] = -fnv * ny + ft1, FZ[q] = -fnv * nz + ft2;
+    const double fnet = f_coh - fnv;
+    FX[q] = fnet * nx + ft0, FY[q] = fnet * ny + ft1, FZ[q] = fnet * nz + ft2;
     CX[q] = ny * ft2 - nz * ft1, CY[q] = nz * ft0 - nx * ft2, CZ[q] = nx * ft1 - ny * ft0;
     AI[q] = ai, AJ[q] = aj;
     PND[q] = gam * vn * vn;
     PTD[q] = slide ? 0.0 : ptd;
     ESL[q] = slide ? esl : 0.0;
-    EST[q] = 0.5 * (kt - kt_old) * (s0 * x0 + s1 * x1 + s2 * x2);
-    UEL[q] = u_n + 0.5 * kt * (x0 * x0 + x1 * x1 + x2 * x2);
+    double est = 0.5 * (kt - kt_old) * (s0 * x0 + s1 * x1 + s2 * x2);
+    double uel = u_coh + u_n + 0.5 * kt * (x0 * x0 + x1 * x1 + x2 * x2);
     FN[q] = fnv;
     VN[q] = vn;
     VT[q] = std::sqrt(vtx * vtx + vty * vty + vtz * vtz);
     DL[q] = delta;
-    if constexpr (kRolling) {
+    if constexpr (kTorque) {
       // Constant directional torque on the relative rolling rate (end of step), limited to what
       // stops it within the step; none without a normal load or a rolling rate.
       const double wx = WP[a3] - WP[b3], wy = WP[a3 + 1] - WP[b3 + 1], wz = WP[a3 + 2] - WP[b3 + 2];
@@ -207,6 +228,50 @@ void contact_lanes(const typename ContactLaw<Normal, Rolling, NoCohesion>::Param
       MX[q] = -per * rx, MY[q] = -per * ry, MZ[q] = -per * rz;
       ERO[q] = on ? m * w * dt : 0.0;
     }
+    if constexpr (kEpsd) {
+      // Elastic-plastic rolling spring: theta turned into the tangent plane (length kept), grown by
+      // the step's relative rotation (mid-step rate, tangential part), k_r = 2.25 k_n mu_r^2 r_a^2,
+      // the torque capped at mu_r r_a F_n with the plastic rotation's loss.
+      const int hr = 4 * K[q];
+      const double ra = arm * r_star, kr = 2.25 * kn * mu_r * mu_r * ra * ra;
+      double h0 = RH[hr], h1 = RH[hr + 1], h2 = RH[hr + 2];
+      const double kr_old = RH[hr + 3];
+      const double hh = h0 * h0 + h1 * h1 + h2 * h2;
+      const double hn = h0 * nx + h1 * ny + h2 * nz;
+      const double p0 = h0 - hn * nx, p1 = h1 - hn * ny, p2 = h2 - hn * nz;
+      const double pp = p0 * p0 + p1 * p1 + p2 * p2;
+      const double sr = std::sqrt(hh / (pp > 0 ? pp : 1.0));
+      const double sp = pp > 0 ? sr : 0.0;
+      h0 = hh > 0 ? p0 * sp : h0;
+      h1 = hh > 0 ? p1 * sp : h1;
+      h2 = hh > 0 ? p2 * sp : h2;
+      const double q0 = h0, q1 = h1, q2 = h2;
+      const double m_start = kr_old * std::sqrt(h0 * h0 + h1 * h1 + h2 * h2);
+      const double wx = W[a3] - W[b3], wy = W[a3 + 1] - W[b3 + 1], wz = W[a3 + 2] - W[b3 + 2];
+      const double wn = wx * nx + wy * ny + wz * nz;
+      h0 += (wx - wn * nx) * dt;
+      h1 += (wy - wn * ny) * dt;
+      h2 += (wz - wn * nz) * dt;
+      double m0 = -kr * h0, m1 = -kr * h1, m2 = -kr * h2;
+      const double mcap = mu_r * ra * (fnv > 0 ? fnv : 0.0);
+      const double mm = std::sqrt(m0 * m0 + m1 * m1 + m2 * m2);
+      const bool plastic = mm > mcap;
+      const double mr = mcap / (plastic ? mm : 1.0);
+      m0 = plastic ? m0 * mr : m0, m1 = plastic ? m1 * mr : m1, m2 = plastic ? m2 * mr : m2;
+      const double ikr = 1.0 / (kr > 0 ? kr : 1.0);
+      const double c0 = kr > 0 ? -m0 * ikr : 0.0, c1 = kr > 0 ? -m1 * ikr : 0.0,
+                   c2 = kr > 0 ? -m2 * ikr : 0.0;
+      const double l0 = h0 - c0, l1 = h1 - c1, l2 = h2 - c2;
+      const double slip = std::sqrt(l0 * l0 + l1 * l1 + l2 * l2);
+      ERO[q] = plastic ? 0.5 * (m_start + mcap) * slip : 0.0;
+      h0 = plastic ? c0 : h0, h1 = plastic ? c1 : h1, h2 = plastic ? c2 : h2;
+      RH[hr] = h0, RH[hr + 1] = h1, RH[hr + 2] = h2, RH[hr + 3] = kr;
+      est += 0.5 * (kr - kr_old) * (q0 * h0 + q1 * h1 + q2 * h2);
+      uel += 0.5 * kr * (h0 * h0 + h1 * h1 + h2 * h2);
+      MX[q] = m0, MY[q] = m1, MZ[q] = m2;
+    }
+    EST[q] = est;
+    UEL[q] = uel;
   }
 }
 

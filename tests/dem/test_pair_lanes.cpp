@@ -1,7 +1,7 @@
 // The lane form of the Hertz-Mindlin and linear laws (dem/pair_lanes.hpp) against the scalar law
-// it must equal (ContactLaw<Normal, Rolling, NoCohesion>::evaluate, without rolling and with the
-// constant-torque model): random touching pairs with random velocities, spins and springs, a third
-// of them sliding, every output and the updated spring.
+// it must equal (ContactLaw<Normal, Rolling, Cohesion>::evaluate, every rolling model, with and
+// without van der Waals cohesion): random touching pairs with random velocities, spins and springs,
+// a third of them sliding and rolling plastically, every output and the updated springs.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,9 +21,10 @@ using namespace lbdem;
 using namespace lbdem::dem;
 namespace {
 
-template <class Normal, class Rolling>
+template <class Normal, class Rolling, class Cohesion = NoCohesion>
 void compare_lanes() {
-  using Law = ContactLaw<Normal, Rolling, NoCohesion>;
+  using Law = ContactLaw<Normal, Rolling, Cohesion>;
+  constexpr bool kEpsd = std::is_same_v<Rolling, EpsdRolling>;
   MaterialPair mp{};
   mp.e_star = 5e6 / (2 * (1 - 0.09));
   mp.g_star = mp.e_star * 0.4;
@@ -32,6 +33,8 @@ void compare_lanes() {
   mp.stiffness = 1000;
   typename Law::Params prm{Normal::from(mp, 2.0 / 7.0), mp.friction, true, {}, {}};
   if constexpr (Rolling::active) prm.rolling = {0.05, 1.0};  // mu_r, arm / R*
+  // Bond number about 10 for these 1 mm spheres: the pull is comparable to the contact forces.
+  if constexpr (Cohesion::active) prm.cohesion = {1e-17, 4e-10, 1e-7};  // A, h_min, h_max
   const double dt = 1e-6;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.5, 1.5);
@@ -46,6 +49,7 @@ void compare_lanes() {
     wp.push_back(p.omega.back() + Vec3(u(rng), u(rng), u(rng)));
   }
   std::vector<SpringHistory> lanes(n / 2), scalar(n / 2);
+  std::vector<RollingHistory> lanes_r(n / 2), scalar_r(n / 2);
   LaneBuffer buf;
   std::vector<Vec3> d(n / 2);
   for (int c = 0; c < n / 2; ++c) {
@@ -63,9 +67,17 @@ void compare_lanes() {
                                               : 2.0 / 7.0 * mp.stiffness) *
         pos(rng);
     scalar[c] = lanes[c];
+    if constexpr (kEpsd) {  // a rolling spring likewise, every third one past its cap
+      // the last step's k_r: the linear law's 2.25 k_n mu_r^2 R*^2 at R* = 0.25 mm, varied
+      const double kr = 2.25 * mp.stiffness * 0.05 * 0.05 * 6.25e-8 * pos(rng);
+      lanes_r[c].theta =
+          Vec3(u(rng), u(rng), u(rng)).normalized() * (c % 3 == 1 ? 1e-1 : 1e-5) * pos(rng);
+      lanes_r[c].kr = kr;
+      scalar_r[c] = lanes_r[c];
+    }
     buf.push(std::size_t(c), std::size_t(i), std::uint32_t(j), d[c], d[c].norm());
   }
-  contact_lanes<Normal, Rolling>(prm, p, vp, wp, lanes.data(), dt, buf);
+  contact_lanes<Normal, Rolling, Cohesion>(prm, p, vp, wp, lanes.data(), lanes_r.data(), dt, buf);
   int sliding = 0, rolling = 0;
   for (int c = 0; c < n / 2; ++c) {
     CAPTURE(c);
@@ -82,8 +94,7 @@ void compare_lanes() {
     g.w_rel = wp[i] - wp[j];
     g.v_half = p.v[i] - p.v[j] + (ai * p.omega[i] + aj * p.omega[j]).cross(g.n);
     g.w_half = p.omega[i] - p.omega[j];
-    RollingHistory none;
-    const ContactForce s = Law::evaluate(prm, g, HistoryRef{scalar[c], none}, dt);
+    const ContactForce s = Law::evaluate(prm, g, HistoryRef{scalar[c], scalar_r[c]}, dt);
     sliding += s.e_sliding > 0;
     // Round-off only: the two evaluate the same terms in other groupings (1e-12 of each
     // quantity's own scale).
@@ -109,8 +120,14 @@ void compare_lanes() {
       CHECK((Vec3(buf.mx[c], buf.my[c], buf.mz[c]) - s.m_roll).norm() <= 1e-12 * ms);
       CHECK(std::abs(buf.e_ro[c] - s.e_rolling) <= 1e-12 * (e + s.e_rolling));
     }
+    if constexpr (kEpsd) {
+      CHECK((lanes_r[c].theta - scalar_r[c].theta).norm() <= 1e-12 * scalar_r[c].theta.norm());
+      CHECK(lanes_r[c].kr == Approx(scalar_r[c].kr).epsilon(1e-13));
+    }
   }
-  if constexpr (Rolling::active) CHECK(rolling > n / 4);
+  // Constant torque: nearly every contact rolls; EPSD: a third past the cap, the rest elastic.
+  if constexpr (Rolling::active) CHECK(rolling > (kEpsd ? n / 8 : n / 4));
+  if constexpr (kEpsd) CHECK(rolling < n / 2 - 20);
   // Both branches of the cap were exercised.
   CHECK(sliding > 20);
   CHECK(sliding < n / 2 - 20);
@@ -120,10 +137,14 @@ void compare_lanes() {
 
 TEST_CASE(
     "the lane form of the Hertz-Mindlin and linear laws equals the scalar law, sticking and "
-    "sliding",
+    "sliding, with every rolling model and with cohesion",
     "[dem]") {
   compare_lanes<HertzMindlin, NoRolling>();
   compare_lanes<HertzMindlin, ConstantTorqueRolling>();
   compare_lanes<LinearSpringDashpot, NoRolling>();
   compare_lanes<LinearSpringDashpot, ConstantTorqueRolling>();
+  compare_lanes<LinearSpringDashpot, EpsdRolling>();
+  compare_lanes<HertzMindlin, EpsdRolling>();
+  compare_lanes<LinearSpringDashpot, NoRolling, VanDerWaals>();
+  compare_lanes<HertzMindlin, EpsdRolling, VanDerWaals>();
 }
