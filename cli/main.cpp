@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "core/error.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "scenarios/run_command.hpp"
 #include "studies/study_command.hpp"
 

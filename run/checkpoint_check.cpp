@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 
 namespace lbdem::run {
 

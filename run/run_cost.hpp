@@ -37,7 +37,7 @@ struct RunCost {
   std::vector<std::pair<std::string, double>> phases;  // phase timer seconds, by phase_name()
 };
 
-/// The sums of the run in progress (DemDriver). The phase timers must have been reset when this
+/// The sums of the run in progress (RunLoop). The phase timers must have been reset when this
 /// invocation began (run_scenario does).
 class RunCostMeter {
  public:

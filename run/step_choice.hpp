@@ -10,7 +10,7 @@ struct StepChoice {
   dem::TimeScales scales;
   double dt_factor = 1;  // the parcels' step over dem.dt (coarse graining)
   bool forced = false;   // dem.force_dt
-  // The DEM watchdog's limits (dem_driver.hpp, DemWatch): dem.max_speed_factor and
+  // The DEM watchdog's limits (run_loop.hpp, DemWatch): dem.max_speed_factor and
   // dem.max_energy_error.
   double max_speed_factor = 10, max_energy_error = 0.1;
 };

@@ -16,7 +16,7 @@
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "core/h5.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "studies/study_case.hpp"
 #include "tools/src/collision_summary.hpp"

@@ -332,7 +332,6 @@ void BoxScenario::banner(Log& log) const {
                " passes: a uniform bed reads a solid fraction off by up to that share next to "
                "walls and solid cells (each particle's volume is still conserved)");
   }
-  if (extra_.banner) extra_.banner(log);
 }
 
 DemWatch BoxScenario::watch() const {
@@ -404,9 +403,33 @@ void BoxScenario::before_step(dem::DemSolver& s) {
       if (inside(p.x[k], 0, outlet_.lo, outlet_.hi)) out.push_back(static_cast<std::uint32_t>(k));
     if (!out.empty()) s.remove_particles(out);
   }
+  warn_once(s);
 }
 
-std::vector<std::string> BoxScenario::box_columns() const {
+void BoxScenario::warn_once(const dem::DemSolver& s) {
+  if (!log_) return;
+  if (inflow_.behind_at >= 0 && !inflow_.behind_warned) {
+    inflow_.behind_warned = true;
+    log_->line("warning: inflow: the feed region is full at t = " + to_text(inflow_.behind_at) +
+               " s: " + to_text(inflow_.inserted) + " kg inserted of the " +
+               to_text(inflow_.behind_target) +
+               " kg asked by then (the rest follows as room frees); enlarge inflow.lo - "
+               "inflow.hi or give the feed a velocity");
+  }
+  // Clipped gas fractions: said once per run, with where (kernel.hpp).
+  if (coupled_ && gas_->report().porosity.clipped > 0 && !clip_warned_) {
+    clip_warned_ = true;
+    const auto& p = gas_->report().porosity;
+    log_->line("warning: coupling: eps fell below coupling.eps_min = " +
+               to_text(coupling_.settings.eps_min) + " in " + std::to_string(p.clipped) +
+               " cells at t = " + to_text(s.time()) + " s (lowest " + to_text(p.lowest) +
+               ", first at cell " + std::to_string(p.first[0]) + ", " + std::to_string(p.first[1]) +
+               ", " + std::to_string(p.first[2]) +
+               "); clipped there. A wider coupling.kernel_width smooths the bed");
+  }
+}
+
+std::vector<std::string> BoxScenario::row_columns() const {
   std::vector<std::string> c = wall_columns_;
   c.push_back("mass_inserted_kg");
   if (gas_) {
@@ -418,19 +441,21 @@ std::vector<std::string> BoxScenario::box_columns() const {
          {"drag_force_x_N", "drag_force_y_N", "drag_force_z_N", "pressure_gradient_force_z_N",
           "mean_eps_at_particles", "eps_clipped_cells", "gas_work_on_particles_J"})
       c.emplace_back(name);
-  c.insert(c.end(), extra_.columns.begin(), extra_.columns.end());
   return c;
 }
 
 std::vector<std::string> BoxScenario::columns() const {
-  std::vector<std::string> c = driver_columns();
-  const auto own = box_columns();
+  std::vector<std::string> c = loop_columns();
+  const auto own = row_columns();
   c.insert(c.end(), own.begin(), own.end());
+  if (extension_) {
+    const auto more = extension_->row_columns();
+    c.insert(c.end(), more.begin(), more.end());
+  }
   return c;
 }
 
-std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
-  std::vector<double> v;
+void BoxScenario::on_row(const dem::DemSolver& s, std::vector<double>& v) const {
   for (const auto& w : s.walls()) {
     Vec3 axis = Vec3::UnitZ();
     if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
@@ -449,11 +474,35 @@ std::vector<double> BoxScenario::values(const dem::DemSolver& s) const {
     v.insert(v.end(), {r.drag[0], r.drag[1], r.drag[2], r.pressure_force[2], r.mean_eps_particles,
                        double(r.porosity.clipped), s.energy().external_work});
   }
-  if (extra_.values) {
-    const auto e = extra_.values(s);
-    v.insert(v.end(), e.begin(), e.end());
-  }
-  return v;
+}
+
+void BoxScenario::on_checkpoint(H5Out& f) const {
+  std::ostringstream os;
+  os << rng_;
+  f.attr("rng_state", os.str());
+  f.attr("inflow_inserted_kg", inflow_.inserted);
+}
+
+void BoxScenario::on_resume(const H5In& f) {
+  std::istringstream is(f.attr_string("rng_state"));
+  is >> rng_;
+  inflow_.inserted = f.attr_double("inflow_inserted_kg");
+}
+
+void BoxScenario::on_snapshot(const std::string& dir, const std::vector<double>& times,
+                              const std::vector<run::SnapshotArray>& gas_arrays) {
+  if (gas_) write_fluid_snapshot(dir, gas_->gas(), fluid_, times, gas_arrays);
+}
+
+std::optional<std::string> BoxScenario::health(const dem::DemSolver& s) {
+  if (!gas_) return std::nullopt;
+  auto error = check_fluid_health(gas_->gas(), fluid_, s.time(), s.steps());
+  if (!error && !mach_warned_ && log_)
+    if (auto w = check_fluid_mach(gas_->gas(), fluid_, s.time())) {
+      mach_warned_ = true;
+      log_->line(*w);
+    }
+  return error;
 }
 
 std::array<std::int64_t, 3> BoxScenario::lattice() const {
@@ -463,61 +512,14 @@ std::array<std::int64_t, 3> BoxScenario::lattice() const {
 }
 
 int BoxScenario::run(const RunContext& ctx) {
-  DriverHooks hooks;
-  hooks.before_step = [this, &ctx](dem::DemSolver& s) {
-    before_step(s);
-    if (inflow_.behind_at >= 0 && !inflow_.behind_warned && ctx.log) {
-      inflow_.behind_warned = true;
-      ctx.log->line("warning: inflow: the feed region is full at t = " +
-                    to_text(inflow_.behind_at) + " s: " + to_text(inflow_.inserted) +
-                    " kg inserted of the " + to_text(inflow_.behind_target) +
-                    " kg asked by then (the rest follows as room frees); enlarge inflow.lo - "
-                    "inflow.hi or give the feed a velocity");
-    }
-    // Clipped gas fractions: said once per run, with where (kernel.hpp).
-    if (coupled_ && gas_->report().porosity.clipped > 0 && !clip_warned_ && ctx.log) {
-      clip_warned_ = true;
-      const auto& p = gas_->report().porosity;
-      ctx.log->line("warning: coupling: eps fell below coupling.eps_min = " +
-                    to_text(coupling_.settings.eps_min) + " in " + std::to_string(p.clipped) +
-                    " cells at t = " + to_text(s.time()) + " s (lowest " + to_text(p.lowest) +
-                    ", first at cell " + std::to_string(p.first[0]) + ", " +
-                    std::to_string(p.first[1]) + ", " + std::to_string(p.first[2]) +
-                    "); clipped there. A wider coupling.kernel_width smooths the bed");
-    }
-  };
-  hooks.gas = gas_.get();
-  hooks.extra_columns = box_columns();
-  hooks.extra_values = [this](const dem::DemSolver& s) { return values(s); };
-  hooks.save = [this](H5Out& f) {
-    std::ostringstream os;
-    os << rng_;
-    f.attr("rng_state", os.str());
-    f.attr("inflow_inserted_kg", inflow_.inserted);
-  };
-  hooks.load = [this](const H5In& f) {
-    std::istringstream is(f.attr_string("rng_state"));
-    is >> rng_;
-    inflow_.inserted = f.attr_double("inflow_inserted_kg");
-  };
-  if (gas_) {
-    hooks.snapshot = [this](const std::string& dir, const std::vector<double>& times) {
-      write_fluid_snapshot(dir, gas_->gas(), fluid_, times,
-                           extra_.snapshot ? extra_.snapshot() : std::vector<SnapshotArray>{});
-    };
-    hooks.health = [this, &ctx](const dem::DemSolver& s) {
-      auto error = check_fluid_health(gas_->gas(), fluid_, s.time(), s.steps());
-      if (!error && !mach_warned_ && ctx.log)
-        if (auto w = check_fluid_mach(gas_->gas(), fluid_, s.time())) {
-          mach_warned_ = true;
-          ctx.log->line(*w);
-        }
-      return error;
-    };
-  }
-  hooks.watch = watch();
-  DemDriver driver(*solver_, out_, hooks);
-  return driver.run(ctx);
+  log_ = ctx.log;
+  RunParts parts;
+  parts.observers.push_back(this);
+  if (extension_) parts.observers.push_back(extension_);
+  parts.gas = gas_.get();
+  parts.watch = watch();
+  RunLoop loop(*solver_, out_, std::move(parts));
+  return loop.run(ctx);
 }
 
 }  // namespace lbdem::scenarios

@@ -13,7 +13,9 @@
 // gas run: the DEM then only keeps the clock, one DEM step per gas step, and takes no [dem] table.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "core/config.hpp"
@@ -25,7 +27,7 @@
 #include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/coupling_config.hpp"
 #include "scenarios/common/dem_config.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "scenarios/common/fluid_config.hpp"
 #include "scenarios/common/fluid_output.hpp"
 #include "run/run_context.hpp"
@@ -33,7 +35,10 @@
 
 namespace lbdem::scenarios {
 
-class BoxScenario : public Scenario {
+/// The box is also the observer of its run (run/observer.hpp): the feed and outlet before each
+/// step, its walls', gas's and exchange's columns, the gas's snapshots and health; a scenario built
+/// on it adds its own observer with extend().
+class BoxScenario : public Scenario, public run::Observer {
  public:
   /// Reads and checks the whole config (throws InputError): nothing is written here.
   explicit BoxScenario(const Config& cfg);
@@ -51,37 +56,45 @@ class BoxScenario : public Scenario {
   coupling::Coupler* coupler() { return gas_ ? gas_->coupler() : nullptr; }
   /// DEM steps at which every solver stands at the same time (output and checkpoint instants).
   std::int64_t cycle() const;
-  /// Columns and values the box adds to timeseries.csv after the driver's (public for scenarios
-  /// built on it).
-  std::vector<std::string> box_columns() const;
   std::vector<std::string> columns() const override;
-  std::vector<double> values(const dem::DemSolver& s) const;
-  /// Extra columns from a scenario built on the box (fluidized bed): called at every row.
-  struct Extra {
-    std::vector<std::string> columns;
-    std::function<std::vector<double>(const dem::DemSolver&)> values;
-    std::function<void(Log&)> banner;
-    /// Data sets added to every gas snapshot (fluid_output.hpp).
-    std::function<std::vector<SnapshotArray>()> snapshot;
-  };
-  void set_extra(Extra e) { extra_ = std::move(e); }
+  /// A scenario built on the box (fluidized bed, jet mill) takes part in the run through its own
+  /// observer, called after the box's (not owned; its columns follow the box's).
+  void extend(run::Observer* o) { extension_ = o; }
   /// A DEM wall from a scenario built on the box, with its timeseries columns (before run()).
   void add_wall(dem::Wall w);
-  /// Builds the exchange anew for the gas's current solid cells (its kernel leaves solids out when
-  /// built): for scenarios that shape the gas after the box (jet mill). No-op without [coupling].
-  void rebuild_coupler();
-  /// Inflow and outlet, called by the driver before every step (public for tests that step by
-  /// hand).
-  void before_step(dem::DemSolver& s);
+  /// Lets a scenario built on the box shape the gas after the box made it (solid cells, sources:
+  /// the jet mill's chamber), then builds the exchange for the gas as shaped (its kernel leaves the
+  /// solid cells out when built). Only for a box with a gas (throws std::logic_error otherwise).
+  template <class Shape>
+  void shape_gas(Shape&& shape) {
+    if (!gas_) throw std::logic_error("BoxScenario::shape_gas: the box has no gas");
+    shape(gas_->gas());
+    rebuild_coupler();
+  }
+
+  // The box's part in the run (run::Observer). before_step is public for tests that step by hand.
+  std::vector<std::string> row_columns() const override;
+  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
+  void before_step(dem::DemSolver& s) override;
+  void on_checkpoint(H5Out& f) const override;
+  void on_resume(const H5In& f) override;
+  void on_snapshot(const std::string& dir, const std::vector<double>& times,
+                   const std::vector<run::SnapshotArray>& gas_arrays) override;
+  std::optional<std::string> health(const dem::DemSolver& s) override;
+
   const OutputSettings& output() const override { return out_; }
   std::array<std::int64_t, 3> lattice() const override;
-  /// The DEM watchdog's limits (dem_driver.hpp): off for a pure gas run; the walls a scenario
+  /// The DEM watchdog's limits (run_loop.hpp): off for a pure gas run; the walls a scenario
   /// built on the box added count.
   DemWatch watch() const;
 
  private:
   /// Sets each ramped inlet to its velocity at time t [s] (before every gas step).
   void ramp_inlets(double t);
+  /// Builds the exchange anew for the gas's current solid cells. No-op without [coupling].
+  void rebuild_coupler();
+  /// The run's warnings that are said once (a feed behind its rate, clipped gas fractions).
+  void warn_once(const dem::DemSolver& s);
 
   struct Inflow {
     bool on = false;
@@ -103,7 +116,8 @@ class BoxScenario : public Scenario {
   std::unique_ptr<run::CoupledGas> gas_;  // the gas and, coupled, the exchange; null without gas
   CouplingConfig coupling_;
   std::array<Vec3, 6> inlet_set_;  // inflow velocity last given to each ramped face [m/s]
-  Extra extra_;
+  run::Observer* extension_ = nullptr;
+  Log* log_ = nullptr;  // the run's log while run() runs (warnings said once)
   bool clip_warned_ = false;
   bool mach_warned_ = false;  // check_fluid_mach: said once per run
   FluidConfig fluid_;

@@ -79,7 +79,7 @@ std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c) 
 
 void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
                           const std::vector<double>& times,
-                          const std::vector<SnapshotArray>& extra) {
+                          const std::vector<run::SnapshotArray>& extra) {
   const lbm::LatticeUnits u = c.units();
   const std::size_t index = times.size() - 1;
   const std::size_t nx = std::size_t(c.cells[0]), ny = std::size_t(c.cells[1]),
@@ -113,7 +113,7 @@ void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const
     f.write_array("/pressure_Pa", pressure, {nz, ny, nx});
     f.write_array("/porosity", porosity, {nz, ny, nx});
     f.write_array("/solid", solid, {nz, ny, nx});
-    for (const SnapshotArray& a : extra) f.write("/" + a.name, a.values);
+    for (const run::SnapshotArray& a : extra) f.write("/" + a.name, a.values);
     f.commit();
   }
   const Vec3 origin = c.cell_centre(0, 0, 0);

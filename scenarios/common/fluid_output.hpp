@@ -11,6 +11,7 @@
 
 #include "core/h5.hpp"
 #include "lbm/lbm_solver.hpp"
+#include "run/observer.hpp"
 #include "scenarios/common/fluid_config.hpp"
 
 namespace lbdem::scenarios {
@@ -25,12 +26,6 @@ namespace lbdem::scenarios {
 std::vector<std::string> fluid_columns(const FluidConfig& c);
 std::vector<double> fluid_values(const lbm::LbmSolver& s, const FluidConfig& c);
 
-/// A one-dimensional data set a scenario adds to each gas snapshot (SI, its unit in the name).
-struct SnapshotArray {
-  std::string name;
-  std::vector<double> values;
-};
-
 /// Writes snapshots/fluid_NNNNNN.h5 for the last entry of `times` (index times.size() - 1) and
 /// rewrites fluid.h5 (time_s; /grid: origin_m the first cell's centre, lower_corner_m, spacing_m,
 /// cells; external links to every snapshot) and fluid.xdmf. Datasets, row-major
@@ -39,7 +34,7 @@ struct SnapshotArray {
 /// `extra`, each under /name (not in the XDMF, which lists cell fields only).
 void write_fluid_snapshot(const std::string& dir, const lbm::LbmSolver& s, const FluidConfig& c,
                           const std::vector<double>& times,
-                          const std::vector<SnapshotArray>& extra = {});
+                          const std::vector<run::SnapshotArray>& extra = {});
 
 /// Watchdog limits [lattice units]: rho within +-20 % of the reference, several times the 3 %
 /// that check_stability allows for the static Dp (plus ~4 % dynamic pressure at the 0.3 Mach

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/log.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "run/run_context.hpp"
 
 namespace lbdem::scenarios {
@@ -25,7 +25,7 @@ class Scenario {
   /// The gas lattice's interior cells per axis (zeros without gas): recorded in each checkpoint,
   /// which a resume must match (checkpoint_check.hpp).
   virtual std::array<std::int64_t, 3> lattice() const { return {0, 0, 0}; }
-  /// The columns of the run's timeseries.csv, in order (SI names): the DEM driver's, then the
+  /// The columns of the run's timeseries.csv, in order (SI names): the run loop's, then the
   /// scenario's own. Known before the run, so that a study can check the names it will read.
   virtual std::vector<std::string> columns() const = 0;
 };

@@ -42,18 +42,21 @@ FluidizedBedScenario::FluidizedBedScenario(const Config& cfg) : box_(cfg) {
   hamaker_original_ = mats.empty() ? 0.0 : mats.front().get("hamaker", 0.0);
   h_min_ = box_.solver().settings().contact.h_min;
 
-  BoxScenario::Extra extra;
-  extra.columns = {"bed_height_m", "pressure_drop_Pa", "bed_voidage"};
-  extra.values = [this](const dem::DemSolver&) {
-    const double h = bed_height();
-    return std::vector<double>{h, pressure_drop(), bed_voidage(h)};
-  };
-  extra.banner = [this](Log& log) { bed_banner(log); };
-  box_.set_extra(std::move(extra));
+  box_.extend(this);
 }
 
 void FluidizedBedScenario::banner(Log& log) const {
   box_.banner(log);
+  bed_banner(log);
+}
+
+std::vector<std::string> FluidizedBedScenario::row_columns() const {
+  return {"bed_height_m", "pressure_drop_Pa", "bed_voidage"};
+}
+
+void FluidizedBedScenario::on_row(const dem::DemSolver& /*s*/, std::vector<double>& row) const {
+  const double h = bed_height();
+  row.insert(row.end(), {h, pressure_drop(), bed_voidage(h)});
 }
 
 double FluidizedBedScenario::bed_height() const {

@@ -19,9 +19,12 @@
 
 namespace lbdem::scenarios {
 
-class FluidizedBedScenario : public Scenario {
+/// Built on the box, and the observer of the bed's own columns in its run (box_.extend(this)).
+class FluidizedBedScenario : public Scenario, public run::Observer {
  public:
   explicit FluidizedBedScenario(const Config& cfg);
+  FluidizedBedScenario(const FluidizedBedScenario&) = delete;  // the box holds `this`
+  FluidizedBedScenario& operator=(const FluidizedBedScenario&) = delete;
   void banner(Log& log) const override;
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
@@ -32,6 +35,8 @@ class FluidizedBedScenario : public Scenario {
   double bed_height() const;
   double pressure_drop() const;
   double bed_voidage(double bed_height) const;
+  std::vector<std::string> row_columns() const override;
+  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
 
  private:
   void bed_banner(Log& log) const;

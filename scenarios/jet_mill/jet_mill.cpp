@@ -49,16 +49,18 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
   geometry_ = read_jet_mill(cfg.section("jet_mill"), f);
   const bool particles = cfg.section("inflow").get_bool("enabled", false);
   if (particles) add_chamber_walls(cfg);
-  lbm::LbmSolver& gas = *box_.gas();
-  outlet_ = build_chamber(gas, f, geometry_);
-  if (particles && geometry_.meshed()) check_feed_in_gas(cfg);
-  sources_ = jet_sources(gas, f, geometry_);
-  gas.set_mass_sources(sources_.mass);
-  gas.enable_force_field();
-  gas.set_force_field(sources_.force);
-  // The exchange's kernel must see the chamber's solid cells, which exist only now.
-  box_.rebuild_coupler();
+  // The chamber and the jets shape the gas; the box then builds the exchange's kernel, which must
+  // see the chamber's solid cells.
+  box_.shape_gas([&](lbm::LbmSolver& gas) {
+    outlet_ = build_chamber(gas, f, geometry_);
+    if (particles && geometry_.meshed()) check_feed_in_gas(cfg);
+    sources_ = jet_sources(gas, f, geometry_);
+    gas.set_mass_sources(sources_.mass);
+    gas.enable_force_field();
+    gas.set_force_field(sources_.force);
+  });
   if (box_.coupler()) box_.coupler()->set_gas_source(sources_.force);
+  const lbm::LbmSolver& gas = *box_.gas();
   {
     const lbm::Grid& g = gas.grid();
     ring_level_.assign(std::size_t(g.cells()), 0);
@@ -72,35 +74,33 @@ JetMillScenario::JetMillScenario(const Config& cfg) : box_(cfg) {
         }
   }
 
-  BoxScenario::Extra extra;
-  extra.columns = {
-      "jet_mass_flow_kg_s",           "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
-      "gas_radial_speed_mid_m_s",     "gas_max_speed_m_s",     "gas_angular_momentum_z_Nms",
-      "gas_radial_mass_flow_mid_kg_s"};
-  extra.values = [this](const dem::DemSolver&) {
-    std::vector<Vec3> u;
-    std::vector<double> rho;
-    box_.gas()->velocity(u);
-    box_.gas()->density(rho);
-    const auto ring = ring_velocity(u, 0.5 * geometry_.radius);
-    double umax = 0;
-    for (const Vec3& v : u) umax = std::max(umax, v.norm());
-    return std::vector<double>{jet_mass_flow(),
-                               outlet_mass_flow(),
-                               ring[0],
-                               ring[1],
-                               box_.fluid().units().velocity_to_si(umax),
-                               angular_momentum(u, rho),
-                               radial_mass_flow()[mid_ring()]};
-  };
-  extra.snapshot = [this] {
-    std::vector<double> ring_radius(std::size_t(ring_levels_), 0.0);
-    for (int k = 0; k < ring_levels_; ++k) ring_radius[std::size_t(k)] = k * box_.fluid().dx;
-    return std::vector<SnapshotArray>{{"radial_mass_flow_radius_m", ring_radius},
-                                      {"radial_mass_flow_kg_per_s", radial_mass_flow()}};
-  };
-  extra.banner = [this](Log& log) { mill_banner(log); };
-  box_.set_extra(std::move(extra));
+  box_.extend(this);
+}
+
+std::vector<std::string> JetMillScenario::row_columns() const {
+  return {"jet_mass_flow_kg_s",           "outlet_mass_flow_kg_s", "gas_tangential_speed_mid_m_s",
+          "gas_radial_speed_mid_m_s",     "gas_max_speed_m_s",     "gas_angular_momentum_z_Nms",
+          "gas_radial_mass_flow_mid_kg_s"};
+}
+
+void JetMillScenario::on_row(const dem::DemSolver& /*s*/, std::vector<double>& row) const {
+  std::vector<Vec3> u;
+  std::vector<double> rho;
+  box_.gas()->velocity(u);
+  box_.gas()->density(rho);
+  const auto ring = ring_velocity(u, 0.5 * geometry_.radius);
+  double umax = 0;
+  for (const Vec3& v : u) umax = std::max(umax, v.norm());
+  row.insert(row.end(), {jet_mass_flow(), outlet_mass_flow(), ring[0], ring[1],
+                         box_.fluid().units().velocity_to_si(umax), angular_momentum(u, rho),
+                         radial_mass_flow()[mid_ring()]});
+}
+
+std::vector<run::SnapshotArray> JetMillScenario::snapshot_arrays() const {
+  std::vector<double> ring_radius(std::size_t(ring_levels_), 0.0);
+  for (int k = 0; k < ring_levels_; ++k) ring_radius[std::size_t(k)] = k * box_.fluid().dx;
+  return {{"radial_mass_flow_radius_m", ring_radius},
+          {"radial_mass_flow_kg_per_s", radial_mass_flow()}};
 }
 
 void JetMillScenario::add_chamber_walls(const Config& cfg) {

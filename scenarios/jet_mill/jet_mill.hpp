@@ -27,10 +27,17 @@
 
 namespace lbdem::scenarios {
 
-class JetMillScenario : public Scenario {
+/// Built on the box, and the observer of the mill's own columns and snapshot data sets in its run
+/// (box_.extend(this)).
+class JetMillScenario : public Scenario, public run::Observer {
  public:
   explicit JetMillScenario(const Config& cfg);
-  void banner(Log& log) const override { box_.banner(log); }
+  JetMillScenario(const JetMillScenario&) = delete;  // the box holds `this`
+  JetMillScenario& operator=(const JetMillScenario&) = delete;
+  void banner(Log& log) const override {
+    box_.banner(log);
+    mill_banner(log);
+  }
   int run(const RunContext& ctx) override { return box_.run(ctx); }
   const OutputSettings& output() const override { return box_.output(); }
   std::array<std::int64_t, 3> lattice() const override { return box_.lattice(); }
@@ -53,6 +60,9 @@ class JetMillScenario : public Scenario {
   std::vector<double> radial_mass_flow() const;
   /// The cylinder of radial_mass_flow() nearest R / 2.
   std::size_t mid_ring() const;
+  std::vector<std::string> row_columns() const override;
+  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
+  std::vector<run::SnapshotArray> snapshot_arrays() const override;
 
  private:
   void mill_banner(Log& log) const;

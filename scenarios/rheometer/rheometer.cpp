@@ -234,27 +234,31 @@ const std::vector<std::string> kRheometerColumns = {"torque_Nm", "cup_torque_Nm"
 }  // namespace
 
 std::vector<std::string> RheometerScenario::columns() const {
-  std::vector<std::string> c = driver_columns();
+  std::vector<std::string> c = loop_columns();
   c.insert(c.end(), kRheometerColumns.begin(), kRheometerColumns.end());
   return c;
 }
 
+std::vector<std::string> RheometerScenario::row_columns() const {
+  return kRheometerColumns;
+}
+
+void RheometerScenario::on_row(const dem::DemSolver& s, std::vector<double>& row) const {
+  const auto& w = s.walls()[impeller_walls_.front()];
+  double angle = 0;
+  if (const auto* m = std::get_if<dem::MeshWall>(&w.shape))
+    angle = m->motion.omega * m->motion.travel_time(s.time());
+  if (const auto* b = std::get_if<dem::BoxWall>(&w.shape))
+    angle = b->motion.omega * b->motion.travel_time(s.time());
+  row.insert(row.end(), {drive_torque(), cup_torque(), floor_torque(), angular_momentum(), angle});
+}
+
 int RheometerScenario::run(const RunContext& ctx) {
-  DriverHooks hooks;
-  hooks.extra_columns = kRheometerColumns;
-  hooks.extra_values = [this](const dem::DemSolver& s) {
-    const auto& w = s.walls()[impeller_walls_.front()];
-    double angle = 0;
-    if (const auto* m = std::get_if<dem::MeshWall>(&w.shape))
-      angle = m->motion.omega * m->motion.travel_time(s.time());
-    if (const auto* b = std::get_if<dem::BoxWall>(&w.shape))
-      angle = b->motion.omega * b->motion.travel_time(s.time());
-    return std::vector<double>{drive_torque(), cup_torque(), floor_torque(), angular_momentum(),
-                               angle};
-  };
-  hooks.watch = dem_watch(step_, *solver_);
-  DemDriver driver(*solver_, out_, hooks);
-  return driver.run(ctx);
+  RunParts parts;
+  parts.observers = {this};
+  parts.watch = dem_watch(step_, *solver_);
+  RunLoop loop(*solver_, out_, std::move(parts));
+  return loop.run(ctx);
 }
 
 }  // namespace lbdem::scenarios

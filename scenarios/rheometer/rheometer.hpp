@@ -15,7 +15,7 @@
 #include "dem/dem_solver.hpp"
 #include "scenarios/common/cg_config.hpp"
 #include "scenarios/common/dem_config.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "scenarios/common/scenario.hpp"
 
 namespace lbdem::scenarios {
@@ -32,7 +32,8 @@ struct RheometerGeometry {
   double gap() const { return cup_radius - 0.5 * blade_span; }  // blade tip to cup wall [m]
 };
 
-class RheometerScenario : public Scenario {
+/// Also the observer of its run: the torques and the impeller's angle in timeseries.csv.
+class RheometerScenario : public Scenario, public run::Observer {
  public:
   explicit RheometerScenario(const Config& cfg);
   void banner(Log& log) const override;
@@ -48,6 +49,8 @@ class RheometerScenario : public Scenario {
   /// Torques the particles put on the cup wall and the floor about the axis [N m].
   double cup_torque() const;
   double floor_torque() const;
+  std::vector<std::string> row_columns() const override;
+  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
 
  private:
   std::unique_ptr<dem::DemSolver> solver_;

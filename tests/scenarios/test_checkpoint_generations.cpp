@@ -1,4 +1,4 @@
-// Two checkpoint generations (DemDriver): checkpoint.h5 and checkpoint.prev.h5, each verified by
+// Two checkpoint generations (RunLoop): checkpoint.h5 and checkpoint.prev.h5, each verified by
 // the checksums of its datasets (checkpoint_check.hpp); a resume takes the newest that verifies and
 // says which, and refuses with one line when none does.
 #include <catch2/catch.hpp>

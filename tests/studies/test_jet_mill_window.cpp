@@ -12,7 +12,7 @@
 
 #include "core/config.hpp"
 #include "helpers/cli.hpp"
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 #include "studies/jet_mill_study.hpp"
 #include "tools/src/run_folder.hpp"
 #include "tools/src/window_stats.hpp"

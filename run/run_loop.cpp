@@ -1,4 +1,4 @@
-#include "run/dem_driver.hpp"
+#include "run/run_loop.hpp"
 
 #include "core/phase_timer.hpp"
 
@@ -60,10 +60,10 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
   return o;
 }
 
-DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks)
-    : solver_(solver), out_(out), hooks_(std::move(hooks)) {
+RunLoop::RunLoop(dem::DemSolver& solver, OutputSettings out, RunParts parts)
+    : solver_(solver), out_(out), parts_(std::move(parts)) {
   const double dt = solver_.settings().dt;
-  const std::int64_t cycle = hooks_.gas ? hooks_.gas->cycle() : 1;
+  const std::int64_t cycle = parts_.gas ? parts_.gas->cycle() : 1;
   const auto whole_cycles = [&](std::int64_t n) { return (n + cycle - 1) / cycle * cycle; };
   const auto steps = [&](double interval) {
     return whole_cycles(std::max<std::int64_t>(1, std::llround(interval / dt)));
@@ -74,7 +74,7 @@ DemDriver::DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hoo
                           ? steps(out_.checkpoint_interval)
                           : 0;
   last_step_ = whole_cycles(std::llround(out_.end_time / dt));
-  if (hooks_.watch.on) solver_.set_speed_limit(hooks_.watch.max_speed);
+  if (parts_.watch.on) solver_.set_speed_limit(parts_.watch.max_speed);
 }
 
 namespace {
@@ -100,16 +100,21 @@ void restore_signals() {
 }
 }  // namespace
 
-void DemDriver::diverged(Progress& progress, const std::string& msg) const {
+void RunLoop::diverged(Progress& progress, const std::string& msg) const {
   progress.finish();
   restore_signals();
   if (log_) log_->line("error: " + msg);
   throw Diverged(msg);
 }
 
-void DemDriver::check_health(Progress& progress, double stored0) {
-  if (hooks_.health)
-    if (auto msg = hooks_.health(solver_)) diverged(progress, *msg);
+std::optional<std::string> RunLoop::observer_health() {
+  for (Observer* o : parts_.observers)
+    if (auto msg = o->health(solver_)) return msg;
+  return std::nullopt;
+}
+
+void RunLoop::check_health(Progress& progress, double stored0) {
+  if (auto msg = observer_health()) diverged(progress, *msg);
   if (auto msg = dem_health(stored0)) diverged(progress, *msg);
   last_sound_time_ = solver_.time();
 }
@@ -171,8 +176,8 @@ std::string particle_text(std::int64_t id, const Vec3& x, const Vec3& v, const V
 
 }  // namespace
 
-std::optional<std::string> DemDriver::dem_health(double stored0) const {
-  const DemWatch& w = hooks_.watch;
+std::optional<std::string> RunLoop::dem_health(double stored0) const {
+  const DemWatch& w = parts_.watch;
   if (!w.on) return std::nullopt;
   const auto& p = solver_.particles();
   const double dt = solver_.settings().dt;
@@ -211,9 +216,9 @@ std::optional<std::string> DemDriver::dem_health(double stored0) const {
   return msg + kept + dem_fix(w, dt, false);
 }
 
-void DemDriver::dem_alarm(Progress& progress) const {
+void RunLoop::dem_alarm(Progress& progress) {
   const dem::DemAlarm& a = *solver_.alarm();
-  const DemWatch& w = hooks_.watch;
+  const DemWatch& w = parts_.watch;
   std::string msg = "DEM diverged at t = " + to_text(a.time) + " s (DEM step " +
                     std::to_string(a.step) + ", after its half kick and drift): " +
                     particle_text(a.id, a.x, a.v, a.omega, a.force, a.torque, w) +
@@ -221,8 +226,8 @@ void DemDriver::dem_alarm(Progress& progress) const {
                     dem_fix(w, solver_.settings().dt, a.finite);
   // A coupled run names the side that failed first: the DEM is checked at every step, the gas at
   // outputs, so the gas is looked at now as well.
-  if (hooks_.health) {
-    if (auto gas = hooks_.health(solver_))
+  if (parts_.gas) {
+    if (auto gas = observer_health())
       msg += ". The gas, within its limits at t = " + to_text(last_sound_time_) +
              " s (its last check), is outside them now too: " + *gas;
     else
@@ -304,11 +309,11 @@ const std::vector<std::string> kColumns = {"time_s",
                                            "neighbour_rebuilds"};
 }  // namespace
 
-const std::vector<std::string>& driver_columns() {
+const std::vector<std::string>& loop_columns() {
   return kColumns;
 }
 
-void DemDriver::write_row(double stored0, bool regular) {
+void RunLoop::write_row(double stored0, bool regular) {
   const auto e = solver_.energy();
   // Collisions begun per second since the previous row.
   const double span = solver_.time() - prev_t_;
@@ -339,10 +344,7 @@ void DemDriver::write_row(double stored0, bool regular) {
                              rate(solver_.collisions().started_pw(), prev_pw_),
                              solver_.mass_removed(),
                              double(solver_.rebuilds())};
-  if (hooks_.extra_values) {
-    const auto extra = hooks_.extra_values(solver_);
-    row.insert(row.end(), extra.begin(), extra.end());
-  }
+  for (const Observer* o : parts_.observers) o->on_row(solver_, row);
   ts_.row(row);
   if (!regular) return;  // an end-of-run row does not start a new rate interval (see resume)
   prev_t_ = solver_.time();
@@ -350,7 +352,7 @@ void DemDriver::write_row(double stored0, bool regular) {
   prev_pw_ = solver_.collisions().started_pw();
 }
 
-void DemDriver::write_snapshot(const std::string& dir) {
+void RunLoop::write_snapshot(const std::string& dir) {
   const auto& p = solver_.particles();
   const int index = static_cast<int>(snapshot_times_.size());
   char name[64];
@@ -374,7 +376,15 @@ void DemDriver::write_snapshot(const std::string& dir) {
     f.commit();
   }
   snapshot_times_.push_back(solver_.time());
-  if (hooks_.snapshot) hooks_.snapshot(dir, snapshot_times_);
+  if (!parts_.observers.empty()) {
+    std::vector<SnapshotArray> arrays;
+    for (const Observer* o : parts_.observers) {
+      auto a = o->snapshot_arrays();
+      arrays.insert(arrays.end(), std::make_move_iterator(a.begin()),
+                    std::make_move_iterator(a.end()));
+    }
+    for (Observer* o : parts_.observers) o->on_snapshot(dir, snapshot_times_, arrays);
+  }
   // particles.h5 links every snapshot (HDF5 external links), rewritten atomically each time.
   H5Out master(dir + "/particles.h5");
   master.write("/time_s", snapshot_times_);
@@ -389,7 +399,7 @@ void DemDriver::write_snapshot(const std::string& dir) {
   write_particles_xdmf(dir, snapshot_times_);
 }
 
-void DemDriver::write_checkpoint(const std::string& dir, double stored0, bool final) const {
+void RunLoop::write_checkpoint(const std::string& dir, double stored0, bool final) const {
   // Two generations: the checkpoint that verifies becomes checkpoint.prev.h5 (a hard link renamed
   // over the older one, so checkpoint.h5 never goes missing) before the new one replaces it.
   const std::string file = dir + "/checkpoint.h5", prev = dir + "/" + kPreviousCheckpoint;
@@ -416,7 +426,7 @@ void DemDriver::write_checkpoint(const std::string& dir, double stored0, bool fi
   write_run_manifest(dir, m);
 }
 
-void DemDriver::write_checkpoint_file(const std::string& file, double stored0, bool final) const {
+void RunLoop::write_checkpoint_file(const std::string& file, double stored0, bool final) const {
   H5Out f(file);
   f.checksum_datasets();
   f.attr("format", std::string(kCheckpointFormat));
@@ -430,16 +440,19 @@ void DemDriver::write_checkpoint_file(const std::string& file, double stored0, b
   if (identity_)
     save_identity(f, *identity_, std::int64_t(solver_.particles().size()),
                   final ? out_.end_time : 0.0);
-  if (hooks_.save) hooks_.save(f);
-  if (hooks_.gas) hooks_.gas->save(f);
+  for (const Observer* o : parts_.observers) o->on_checkpoint(f);
+  if (parts_.gas) parts_.gas->save(f);
   cost_.save(f, solver_.time());
   f.commit();
 }
 
-int DemDriver::run(const RunContext& ctx) {
+int RunLoop::run(const RunContext& ctx) {
   log_ = ctx.log;
   std::vector<std::string> cols = kColumns;
-  cols.insert(cols.end(), hooks_.extra_columns.begin(), hooks_.extra_columns.end());
+  for (const Observer* o : parts_.observers) {
+    const auto c = o->row_columns();
+    cols.insert(cols.end(), c.begin(), c.end());
+  }
   double stored0 = 0;
   std::string ckpt = ctx.dir + "/checkpoint.h5";
   identity_ = ctx.identity;
@@ -451,8 +464,8 @@ int DemDriver::run(const RunContext& ctx) {
     const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
     snapshot_times_ = f.doubles("/snapshot_times_s");
     solver_.load(f);
-    if (hooks_.load) hooks_.load(f);
-    if (hooks_.gas) hooks_.gas->load(f, solver_);
+    for (Observer* o : parts_.observers) o->on_resume(f);
+    if (parts_.gas) parts_.gas->load(f, solver_);
     cost_.resume(f, solver_.time());
     ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
     const auto prev = f.doubles("/rate_reference");
@@ -475,15 +488,15 @@ int DemDriver::run(const RunContext& ctx) {
   g_old_handlers.term_ = std::signal(SIGTERM, on_stop_signal);
   // A stop waits for the next cycle boundary (at most cycle - 1 DEM steps): only there do all the
   // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
-  const std::int64_t cycle = hooks_.gas ? hooks_.gas->cycle() : 1;
+  const std::int64_t cycle = parts_.gas ? parts_.gas->cycle() : 1;
   while (solver_.steps() < last_step_) {
     // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (the gas then
     // stands behind the coming DEM step; its checkpoint carries the rest).
     bool stop = g_stop_signal && solver_.steps() % cycle == 0;
     if (!stop) {
-      if (hooks_.before_step) hooks_.before_step(solver_);
-      if (hooks_.gas) hooks_.gas->advance(solver_, stop_requested);
-      stop = g_stop_signal && hooks_.gas && hooks_.gas->behind(solver_);
+      for (Observer* o : parts_.observers) o->before_step(solver_);
+      if (parts_.gas) parts_.gas->advance(solver_, stop_requested);
+      stop = g_stop_signal && parts_.gas && parts_.gas->behind(solver_);
     }
     if (stop) {
       extra_row_ = extra_snapshot_ = false;

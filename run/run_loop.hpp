@@ -1,10 +1,10 @@
 #pragma once
-// The time loop shared by the DEM scenarios: output of timeseries.csv, particle snapshots
-// (particles.h5 + .xdmf), collisions.h5, periodic checkpoints and --resume, progress and the
-// start-up banner. Output and checkpoint instants are step counts, so a resumed run writes at the
-// same steps as one that never stopped. Another phase (the box's gas) joins through the hooks:
-// it steps in before_step, writes in snapshot/extra_values/save, and is watched by health.
-#include <functional>
+// The time loop of every run: it steps the DEM and, with one, the gas (coupled_gas.hpp), and
+// writes timeseries.csv, particle snapshots (particles.h5 + .xdmf), collisions.h5, periodic
+// checkpoints and --resume, progress and the start-up banner. Output and checkpoint instants are
+// step counts, so a resumed run writes at the same steps as one that never stopped. A scenario
+// takes part through its observers (observer.hpp): columns, work before each step, its own state
+// in the checkpoint, snapshots beside the particles', and a health check.
 #include <limits>
 #include <optional>
 #include <random>
@@ -17,6 +17,7 @@
 #include "dem/dem_solver.hpp"
 #include "run/step_choice.hpp"
 #include "run/coupled_gas.hpp"
+#include "run/observer.hpp"
 #include "run/run_context.hpp"
 #include "run/run_cost.hpp"
 
@@ -31,19 +32,20 @@ struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// SIGINT or SIGTERM arrived during DemDriver::run: work that holds many steps inside one DEM
-/// step (the gas of an exchange interval) returns early, between its steps, and says so through
-/// DriverHooks::unfinished, so that a stop waits at most about one such step.
+/// SIGINT or SIGTERM arrived during RunLoop::run: work that holds many steps inside one DEM
+/// step (the gas of an exchange interval) returns early, between its steps (CoupledGas::advance
+/// takes this as its stop test), so that a stop waits at most about one such step.
 bool stop_requested();
 
-/// Thrown when the health hook found a diverged state; nothing of that state was written (the
-/// last output and checkpoint stay). lbdem-cli exits with kDivergedExit.
+/// Thrown when an observer's health check or the DEM watchdog found a diverged state; nothing of
+/// that state was written (the last output and checkpoint stay). lbdem-cli exits with
+/// kDivergedExit.
 struct Diverged : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 inline constexpr int kDivergedExit = 3;
 
-/// The generation before checkpoint.h5 in a run folder (DemDriver keeps two; a resume takes the
+/// The generation before checkpoint.h5 in a run folder (RunLoop keeps two; a resume takes the
 /// newest that verifies).
 inline constexpr const char* kPreviousCheckpoint = "checkpoint.prev.h5";
 
@@ -84,32 +86,24 @@ struct ExpectedSpeed {
 DemWatch dem_watch(const StepChoice& step, const dem::DemSolver& s,
                    const std::vector<ExpectedSpeed>& others = {});
 
-/// Scenario-specific parts of the loop.
-struct DriverHooks {
-  std::function<void(dem::DemSolver&)> before_step;  // inflow, outlet, motion, ...
-  /// The gas of a run with one (null without): the loop advances it after before_step, by the
-  /// steps that come before each DEM step or, coupled, by the exchange interval that starts there
-  /// (coupled_gas.hpp); keeps its output, checkpoint and end instants on whole coupling cycles,
-  /// where gas and DEM stand at the same time; and saves and loads it with every checkpoint. A stop
-  /// is taken between gas steps (stop_requested): the loop then checkpoints the gas part-way.
+/// What a run is made of besides the DEM: the scenario's observers, the gas, the DEM watchdog.
+struct RunParts {
+  /// Called in this order at each point of the loop (observer.hpp); not owned.
+  std::vector<Observer*> observers;
+  /// The gas of a run with one (null without): the loop advances it after the observers'
+  /// before_step, by the steps that come before each DEM step or, coupled, by the exchange interval
+  /// that starts there (coupled_gas.hpp); keeps its output, checkpoint and end instants on whole
+  /// coupling cycles, where gas and DEM stand at the same time; and saves and loads it with every
+  /// checkpoint. A stop is taken between gas steps (stop_requested): the loop then checkpoints the
+  /// gas part-way.
   CoupledGas* gas = nullptr;
-  std::vector<std::string> extra_columns;  // extra timeseries.csv columns (SI)
-  std::function<std::vector<double>(const dem::DemSolver&)> extra_values;
-  std::function<void(H5Out&)> save;  // scenario state into the checkpoint
-  std::function<void(const H5In&)> load;
-  /// Called after each particle snapshot with all snapshot times so far (the last one is now):
-  /// other phases write their own snapshots at the same instants (fluid.h5).
-  std::function<void(const std::string& dir, const std::vector<double>& times)> snapshot;
-  /// Watchdog, called before anything is written at a step (row, snapshot, checkpoint, signal
-  /// stop): a message stops the run with Diverged, keeping the last good output.
-  std::function<std::optional<std::string>(const dem::DemSolver&)> health;
   /// The DEM's own watchdog (off unless the scenario sets it: dem_watch).
   DemWatch watch;
 };
 
-class DemDriver {
+class RunLoop {
  public:
-  DemDriver(dem::DemSolver& solver, OutputSettings out, DriverHooks hooks = {});
+  RunLoop(dem::DemSolver& solver, OutputSettings out, RunParts parts = {});
   /// Runs to end_time (from the checkpoint if ctx.resume). Returns 0.
   int run(const RunContext& ctx);
 
@@ -121,19 +115,22 @@ class DemDriver {
   /// written at run.end_time, which a resume of the finished run then recognises.
   void write_checkpoint(const std::string& dir, double stored0, bool final = false) const;
   void write_checkpoint_file(const std::string& file, double stored0, bool final) const;
-  /// Throws Diverged (after restoring the signal handlers) if the health hook (the gas) or the
-  /// DEM watchdog objects; the gas is asked first, the DEM having been checked at every step.
+  /// Throws Diverged (after restoring the signal handlers) if an observer's health check (the
+  /// gas's) or the DEM watchdog objects; the observers are asked first, the DEM having been
+  /// checked at every step.
   void check_health(Progress& progress, double stored0);
+  /// The first observer's health message, or nullopt if every observer finds its state sound.
+  std::optional<std::string> observer_health();
   /// The DEM watchdog on the current state (every particle, and the energy balance): the message,
   /// or nullopt if sound.
   std::optional<std::string> dem_health(double stored0) const;
-  /// Stops the run for DemSolver::alarm, naming the gas's state too in a run with one.
-  [[noreturn]] void dem_alarm(Progress& progress) const;
+  /// Stops the run for DemSolver::alarm, naming the observers' (the gas's) health too.
+  [[noreturn]] void dem_alarm(Progress& progress);
   [[noreturn]] void diverged(Progress& progress, const std::string& msg) const;
 
   dem::DemSolver& solver_;
   OutputSettings out_;
-  DriverHooks hooks_;
+  RunParts parts_;
   std::int64_t every_row_ = 1, every_snapshot_ = 1, every_checkpoint_ = 0, last_step_ = 0;
   std::vector<double> snapshot_times_;
   bool extra_row_ = false, extra_snapshot_ = false;
@@ -146,9 +143,9 @@ class DemDriver {
   RunCostMeter cost_;
 };
 
-/// The driver's own timeseries.csv columns, which every scenario's columns begin with (a scenario
-/// adds DriverHooks::extra_columns after them).
-const std::vector<std::string>& driver_columns();
+/// The loop's own timeseries.csv columns, which every scenario's columns begin with (a scenario
+/// adds its observers' row_columns after them).
+const std::vector<std::string>& loop_columns();
 
 /// Derived DEM numbers for the start-up banner. The radius range counts a feed's
 /// radii (feed_r_min > 0) with the particles present at the start; `watch` adds the watchdog's
