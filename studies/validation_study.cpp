@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -11,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "studies/study_case.hpp"
+#include "tools/src/run_folder.hpp"
 
 namespace lbdem::studies {
 
@@ -64,21 +64,9 @@ const std::vector<ValidationCase>& cases() {
   return c;
 }
 
-// The rows of a goals table after its header.
-std::vector<std::string> goal_rows(const std::string& path) {
-  std::vector<std::string> rows;
-  std::ifstream f(path);
-  std::string line;
-  std::getline(f, line);
-  while (std::getline(f, line))
-    if (!line.empty()) rows.push_back(line);
-  return rows;
-}
-
-// The last field of a CSV row (within_goal: yes, no or -).
-std::string last_field(const std::string& row) {
-  return row.substr(row.rfind(',') + 1);
-}
+// The columns of a case's goals.csv (tools/bed_compare.py), which the study's table repeats.
+const std::vector<std::string> kGoalColumns = {"quantity",   "unit", "measured",   "lbdem",
+                                               "difference", "goal", "within_goal"};
 
 }  // namespace
 
@@ -119,9 +107,12 @@ int run_validation_study(const StudyOptions& opt) {
       std::cerr << "warning: the comparison of " << c.name << " failed (" << cmd << ")\n";
       continue;
     }
-    for (const auto& row : goal_rows(dir + "/goals.csv")) {
-      table << c.name << ",\"" << c.experiment << "\"," << row << "\n";
-      const std::string w = last_field(row);
+    const tools::Table goal = tools::read_csv(dir + "/goals.csv", true);
+    for (std::size_t r = 0; r < goal.rows(); ++r) {
+      table << tools::csv_field(c.name) << "," << tools::csv_field(c.experiment);
+      for (const auto& col : kGoalColumns) table << "," << tools::csv_field(goal.cell(col, r));
+      table << "\n";
+      const std::string& w = goal.cell("within_goal", r);
       goals += w != "-";
       met += w == "yes";
     }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "tools/src/run_folder.hpp"
 
@@ -34,6 +35,25 @@ TEST_CASE("timeseries.csv: short rows and a partial last line are dropped", "[to
     CHECK(std::string(e.what()).find("known: time_s, torque_Nm") != std::string::npos);
   }
   CHECK(window_error(r, 5, 6, 0, 2).find("it covers [0, 0.3] s") != std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST_CASE("CSV text cells: quoted commas and quotes read back as written", "[tools]") {
+  const fs::path d = fresh_dir("csv_text");
+  const std::vector<std::string> texts = {"plain", "a, b", "the \"top\" of the bed", "", "-"};
+  {
+    std::ofstream f(d / "t.csv");
+    f << "label,value\n";
+    for (const auto& t : texts) f << csv_field(t) << ",1.5\n";
+  }
+  const Table t = read_csv((d / "t.csv").string(), true);
+  REQUIRE(t.rows() == texts.size());
+  for (std::size_t r = 0; r < texts.size(); ++r) {
+    CHECK(t.cell("label", r) == texts[r]);
+    CHECK(t.number("value", r) == 1.5);
+  }
+  CHECK(csv_field("a, b") == "\"a, b\"");
+  CHECK(csv_field("x\"y") == "\"x\"\"y\"");
   fs::remove_all(d);
 }
 

@@ -135,17 +135,6 @@ CollisionSummary analyse_collisions(const RunFolder& run, const std::string& lab
   return r;
 }
 
-namespace {
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
-}  // namespace
-
 void write_collision_csvs(const std::string& path, const std::vector<CollisionSummary>& res) {
   std::ostringstream f, h;
   for (std::size_t k = 0; k < res[0].fields.size(); ++k)

@@ -44,7 +44,8 @@ const std::string& Table::cell(std::string_view name, std::size_t row) const {
 }
 
 namespace {
-// The cells of one line, trimmed; a cell in double quotes keeps its commas and loses its quotes.
+// The cells of one line, trimmed; a cell in double quotes keeps its commas and loses its quotes,
+// and "" inside it is one quote (RFC 4180).
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
   std::string cell;
@@ -59,8 +60,12 @@ std::vector<std::string> split(const std::string& line) {
     cell.clear();
     was_quoted = false;
   };
-  for (char c : line) {
-    if (c == '"') {
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (c == '"' && quoted && k + 1 < line.size() && line[k + 1] == '"') {
+      cell += '"';
+      ++k;
+    } else if (c == '"') {
       quoted = !quoted;
       was_quoted = true;
     } else if (c == ',' && !quoted) {
@@ -73,6 +78,13 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 }  // namespace
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
 
 Table read_csv(const std::string& path, bool keep_text) {
   std::ifstream f(path, std::ios::binary);

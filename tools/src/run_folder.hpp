@@ -41,6 +41,9 @@ struct Table {
 /// appends and flushes row by row, so a file read during a run can end in a partial line. A cell
 /// in double quotes may hold commas; the quotes are not part of its text.
 Table read_csv(const std::string& path, bool keep_text = false);
+/// One CSV cell as read_csv reads it back: the text as is, or in double quotes (each quote
+/// doubled) when it holds a comma, a quote or a newline.
+std::string csv_field(const std::string& text);
 
 /// l from a config.toml text: [coarse_grain] size_factor, else particles_per_parcel^(1/3), else 1.
 double size_factor_from_toml(std::string_view toml_text, const std::string& source);
