@@ -240,11 +240,13 @@ template <class Table>
 [[gnu::noinline]] void pair_rows(const Table& tab, const ParticleArrays& p, const Predicted pr,
                                  const DemSettings& s, PairList& pl, double time, RowSums& sums,
                                  EnergyRates* rates, std::size_t b0, std::size_t b1) {
-  // One parameter set (the lanes take it as constants), and indices the lanes' 32-bit gathers
-  // reach (4 per pair, 3 per particle).
-  if (tab.n_materials == 1 && pl.size() < (std::size_t(1) << 29) &&
-      p.size() < (std::size_t(1) << 29))
-    return pair_rows_lanes(tab, p, pr, s, pl, time, sums, rates, b0, b1);
+  using Law = typename Table::law_type;
+  // A law with a lane form, one parameter set (the lanes take it as constants), and indices the
+  // lanes' 32-bit gathers reach (4 per pair, 3 per particle).
+  if constexpr (has_lane_form<Law>())
+    if (tab.n_materials == 1 && pl.size() < (std::size_t(1) << 29) &&
+        p.size() < (std::size_t(1) << 29))
+      return pair_rows_lanes(tab, p, pr, s, pl, time, sums, rates, b0, b1);
   const double range = tab.range;
   const Domain& dom = s.domain;
   const std::size_t n = p.size();

@@ -44,6 +44,18 @@ struct LaneBuffer {
   }
 };
 
+/// Whether contact_lanes has the law's form: the normal, rolling and cohesion models it spells out
+/// below. A law without it (a new model) takes the scalar kernel, which every law has.
+template <class T, class... Of>
+inline constexpr bool kOneOf = (std::is_same_v<T, Of> || ...);
+template <class Law>
+constexpr bool has_lane_form() {
+  const bool normal = kOneOf<typename Law::Normal, HertzMindlin, LinearSpringDashpot>;
+  const bool rolling = kOneOf<typename Law::Rolling, NoRolling, ConstantTorqueRolling, EpsdRolling>;
+  const bool cohesion = kOneOf<typename Law::Cohesion, NoCohesion, VanDerWaals>;
+  return normal && rolling && cohesion;
+}
+
 /// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
 /// pair, updating the tangential springs in `history` (and the rolling springs in `rolling` for
 /// EPSD) and writing the results into `b`. Normal: HertzMindlin or LinearSpringDashpot; Rolling:

@@ -133,6 +133,11 @@ void compare_lanes() {
   CHECK(sliding < n / 2 - 20);
 }
 
+// A normal law the lanes do not spell out takes the scalar kernel (dem_passes.hpp).
+struct UnlistedNormal {};
+static_assert(!has_lane_form<ContactLaw<UnlistedNormal, NoRolling, NoCohesion>>());
+static_assert(has_lane_form<ContactLaw<HertzMindlin, EpsdRolling, VanDerWaals>>());
+
 }  // namespace
 
 TEST_CASE(
