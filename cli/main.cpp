@@ -61,6 +61,9 @@ int main(int argc, char** argv) {
                    "cg: size factors to run and compare, comma separated (the smallest is the "
                    "reference)")
       ->delimiter(',');
+  study->add_option("--level-set", so.level_sets,
+                    "cg: an override for one level only, L:key=value (repeatable), e.g. "
+                    "4:fluid.dx=0.0004 for a gas grid that coarsens with the parcels");
   study
       ->add_option("--observables", so.observables,
                    "cg: timeseries.csv columns to compare (default: the scenario's: bed height "

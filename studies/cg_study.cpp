@@ -183,14 +183,42 @@ int run_cg_study(const StudyOptions& opt) {
         throw InputError("--levels", fmt(l, "%g"), "given twice", "give each size factor once");
     levels.push_back(lv);
   }
-  for (const auto& s : opt.sets) {
+  const auto check_key = [](const std::string& option, const std::string& s) {
     const std::string key = s.substr(0, s.find('='));
     if (key == "coarse_grain.size_factor" || key == "coarse_grain.particles_per_parcel")
-      throw InputError("--set", s, "the cg study sets each level's size factor itself",
+      throw InputError(option, s, "the cg study sets each level's size factor itself",
                        "give the size factors in --levels");
     if (key == "coarse_grain.rule")
-      throw InputError("--set", s, "the cg study takes the rule as --rule",
+      throw InputError(option, s, "the cg study takes the rule as --rule",
                        "give --rule " + s.substr(s.find('=') + 1));
+  };
+  for (const auto& s : opt.sets) check_key("--set", s);
+  // Per-level overrides, "L:key=value", applied after --set (a gas grid that coarsens with the
+  // parcels, a skin or an output interval of one level).
+  for (const auto& ls : opt.level_sets) {
+    const std::size_t colon = ls.find(':');
+    const std::string fix = "give L:key=value with L one of --levels, e.g. " +
+                            fmt(levels.back().l, "%g") + ":fluid.dx=0.0004";
+    if (colon == std::string::npos || ls.find('=', colon) == std::string::npos)
+      throw InputError("--level-set", ls, "not of the form L:key=value", fix);
+    double l = std::nan("");
+    try {
+      std::size_t used = 0;
+      l = std::stod(ls.substr(0, colon), &used);
+      if (used != colon) l = std::nan("");
+    } catch (const std::exception&) {
+    }
+    const std::string set = ls.substr(colon + 1);
+    check_key("--level-set", set);
+    const std::string key = set.substr(0, set.find('='));
+    for (const auto& g : opt.sets)
+      if (g.substr(0, g.find('=')) == key)
+        throw InputError("--level-set", ls, "sets " + key + ", which --set " + g + " sets too",
+                         "give the key in one of them");
+    auto it =
+        std::find_if(levels.begin(), levels.end(), [&](const Level& lv) { return lv.l == l; });
+    if (it == levels.end()) throw InputError("--level-set", ls, "names no level of --levels", fix);
+    it->sets.push_back(set);
   }
   const double tolerance = std::isnan(opt.tolerance) ? kCgTolerance : opt.tolerance;
   if (!(tolerance >= 0))
@@ -323,7 +351,9 @@ int run_cg_study(const StudyOptions& opt) {
                : std::string("none yet (no level has rows in the window)"))
        << "; verdicts: same = |z| <= " << fmt(kCgSigma, "%g")
        << " (no difference the statistics resolve), close = resolved but within "
-       << fmt(100 * tolerance, "%g") << " %, differs = neither\n\n";
+       << fmt(100 * tolerance, "%g") << " %, differs = neither\n";
+  for (const auto& ls : opt.level_sets) text << "level override: " << ls << "\n";
+  text << "\n";
   text << "level     parcels   simulated s   wall s per simulated s   speed-up\n";
   for (const auto& r : results) {
     double parcels = std::nan("");

@@ -20,6 +20,7 @@ struct StudyOptions {
   // scaling rule of every level (empty: the config's) and the relative difference called close.
   std::string config, rule;
   std::vector<double> levels;
+  std::vector<std::string> level_sets;  // "L:key=value": an override for the level l = L only
   std::vector<std::string> observables;
   double tolerance = std::nan("");  // NaN: not given (the cg study takes 0.05)
 };

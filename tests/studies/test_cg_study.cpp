@@ -95,8 +95,16 @@ TEST_CASE(
   const std::string out = tmp + "/study";
   const auto r =
       test::cli("study cg --config " + cfg + " --levels 1,2 --rule hertz --threads 1 --out " + out +
-                " --observables potential_energy_J,kinetic_energy_J");
+                " --observables potential_energy_J,kinetic_energy_J" +
+                " --level-set 2:output.snapshot_interval=0.1");
   REQUIRE(r.code == 0);
+  // The level override reached level 2's run only.
+  CHECK(
+      Config::from_file(out + "/cg2/config.toml").section("output").get("snapshot_interval", 0.0) ==
+      0.1);
+  CHECK(
+      Config::from_file(out + "/cg1/config.toml").section("output").get("snapshot_interval", 0.0) ==
+      0.05);
   // The same system at each level: the fill's 0.05 kg, to within the last parcel the fill placed
   // (at most the largest parcel, r = 2.2 mm x l, beyond the mass asked).
   for (const double l : {1.0, 2.0}) {
@@ -176,6 +184,12 @@ TEST_CASE("cg study: bad input names the option, exits 2 and writes nothing", "[
       {"study cg --config " + cfg + " --levels 1,0.5", "'--levels'"},
       {"study cg --config " + cfg + " --levels 1,2,2", "'--levels'"},
       {"study cg --config " + cfg + " --levels 1,2 --set coarse_grain.size_factor=3", "'--set'"},
+      {"study cg --config " + cfg + " --levels 1,2 --level-set 3:dem.skin=1e-4", "names no level"},
+      {"study cg --config " + cfg + " --levels 1,2 --level-set dem.skin=1e-4", "L:key=value"},
+      {"study cg --config " + cfg + " --levels 1,2 --level-set 2:coarse_grain.rule=hertz",
+       "'--level-set'"},
+      {"study cg --config " + cfg + " --levels 1,2 --set dem.skin=1e-4 --level-set 2:dem.skin=2e-4",
+       "which --set dem.skin=1e-4 sets too"},
       {"study cg --config " + box + " --levels 1,2", "'fill[0].count'"},
       {"study cg --config " + cfg + " --levels 1,2 --rule hertz --observables kinetic_energy",
        "did you mean 'kinetic_energy_J'"},
