@@ -1,6 +1,7 @@
 #pragma once
 // The run-time choice of drag law: one checked-in table, names taken from the laws themselves.
 // A particle loop std::visit's the model once and runs compiled per law (docs/architecture.md).
+#include "core/variant_names.hpp"
 #include "coupling/drag/beetstra.hpp"
 #include "coupling/drag/di_felice.hpp"
 #include "coupling/drag/drag_law.hpp"
@@ -26,6 +27,8 @@ static_assert(DragLaw<Beetstra>);
 
 using DragModel =
     std::variant<SchillerNaumann, MorsiAlexander, WenYu, Gidaspow, DiFelice, Beetstra>;
+
+static_assert(variant_names_unique<DragModel>(), "two drag laws share a name");
 
 /// Every law, in the order of the variant; the config value is the law's name.
 inline const std::array<DragModel, std::variant_size_v<DragModel>> kDragModels{

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/variant_names.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/material.hpp"
 
@@ -32,6 +33,9 @@ struct ContactSettings {
 using NormalVariant = std::variant<LinearSpringDashpot, HertzMindlin>;
 using RollingVariant = std::variant<NoRolling, ConstantTorqueRolling, EpsdRolling>;
 using CohesionVariant = std::variant<NoCohesion, VanDerWaals>;
+static_assert(variant_names_unique<NormalVariant>(), "two normal laws share a name");
+static_assert(variant_names_unique<RollingVariant>(), "two rolling models share a name");
+static_assert(variant_names_unique<CohesionVariant>(), "two cohesion models share a name");
 
 /// The `name` of each alternative of a variant, in its order.
 template <class V>
