@@ -512,7 +512,12 @@ std::array<std::int64_t, 3> BoxScenario::lattice() const {
 }
 
 int BoxScenario::run(const RunContext& ctx) {
+  // The run's log for the warnings said once, for as long as the run lasts.
   log_ = ctx.log;
+  struct Forget {
+    Log*& log;
+    ~Forget() { log = nullptr; }
+  } forget{log_};
   RunParts parts;
   parts.observers.push_back(this);
   if (extension_) parts.observers.push_back(extension_);
