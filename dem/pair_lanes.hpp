@@ -56,6 +56,21 @@ constexpr bool has_lane_form() {
   return normal && rolling && cohesion;
 }
 
+/// Turns a spring (x0, x1, x2) into the plane normal to n, keeping its length; one at right
+/// angles to the plane becomes zero (as the scalar law does). Branch-free, for the lanes.
+inline void into_tangent_plane(double& x0, double& x1, double& x2, double nx, double ny,
+                               double nz) {
+  const double xx = x0 * x0 + x1 * x1 + x2 * x2;
+  const double xn = x0 * nx + x1 * ny + x2 * nz;
+  const double t0 = x0 - xn * nx, t1 = x1 - xn * ny, t2 = x2 - xn * nz;
+  const double tt = t0 * t0 + t1 * t1 + t2 * t2;
+  const double sq = std::sqrt(xx / (tt > 0 ? tt : 1.0));  // unconditional: no branch in lanes
+  const double sc = tt > 0 ? sq : 0.0;
+  x0 = xx > 0 ? t0 * sc : x0;
+  x1 = xx > 0 ? t1 * sc : x1;
+  x2 = xx > 0 ? t2 * sc : x2;
+}
+
 /// Evaluates every pair of `b` (touching: delta > 0) with the parameters `prm` of one material
 /// pair, updating the tangential springs in `history` (and the rolling springs in `rolling` for
 /// EPSD) and writing the results into `b`. Normal: HertzMindlin or LinearSpringDashpot; Rolling:
@@ -175,15 +190,7 @@ void contact_lanes(const typename ContactLaw<Normal, Rolling, Cohesion>::Params&
     // The spring turned into the tangent plane, its length kept.
     double x0 = H[hk], x1 = H[hk + 1], x2 = H[hk + 2];
     const double kt_old = H[hk + 3];
-    const double xx = x0 * x0 + x1 * x1 + x2 * x2;
-    const double xn = x0 * nx + x1 * ny + x2 * nz;
-    const double t0 = x0 - xn * nx, t1 = x1 - xn * ny, t2 = x2 - xn * nz;
-    const double tt = t0 * t0 + t1 * t1 + t2 * t2;
-    const double sq = std::sqrt(xx / (tt > 0 ? tt : 1.0));  // unconditional: no branch in lanes
-    const double sc = tt > 0 ? sq : 0.0;
-    x0 = xx > 0 ? t0 * sc : x0;
-    x1 = xx > 0 ? t1 * sc : x1;
-    x2 = xx > 0 ? t2 * sc : x2;
+    into_tangent_plane(x0, x1, x2, nx, ny, nz);
     const double s0 = x0, s1 = x1, s2 = x2;
     // Grown by the relative displacement of the step (mid-step velocity).
     const double un = ux * nx + uy * ny + uz * nz;
@@ -248,15 +255,7 @@ void contact_lanes(const typename ContactLaw<Normal, Rolling, Cohesion>::Params&
       const double ra = arm * r_star, kr = 2.25 * kn * mu_r * mu_r * ra * ra;
       double h0 = RH[hr], h1 = RH[hr + 1], h2 = RH[hr + 2];
       const double kr_old = RH[hr + 3];
-      const double hh = h0 * h0 + h1 * h1 + h2 * h2;
-      const double hn = h0 * nx + h1 * ny + h2 * nz;
-      const double p0 = h0 - hn * nx, p1 = h1 - hn * ny, p2 = h2 - hn * nz;
-      const double pp = p0 * p0 + p1 * p1 + p2 * p2;
-      const double sr = std::sqrt(hh / (pp > 0 ? pp : 1.0));
-      const double sp = pp > 0 ? sr : 0.0;
-      h0 = hh > 0 ? p0 * sp : h0;
-      h1 = hh > 0 ? p1 * sp : h1;
-      h2 = hh > 0 ? p2 * sp : h2;
+      into_tangent_plane(h0, h1, h2, nx, ny, nz);
       const double q0 = h0, q1 = h1, q2 = h2;
       const double m_start = kr_old * std::sqrt(h0 * h0 + h1 * h1 + h2 * h2);
       const double wx = W[a3] - W[b3], wy = W[a3 + 1] - W[b3 + 1], wz = W[a3 + 2] - W[b3 + 2];
