@@ -150,7 +150,7 @@ std::optional<std::string> checkpoint_fault(const std::string& file) {
       return "not an lbdem checkpoint";
     if (f.has_checksums()) {
       if (auto fault = f.checksum_fault()) return fault;
-      if (f.has_attr("particles", kRunGroup)) {
+      if (f.has_attr("particles", kRunGroup) && f.has("/dem")) {
         const auto n = f.attr_int("particles", kRunGroup);
         const auto x = f.vec3s("/dem/x");
         if (std::int64_t(x.size()) != n)
@@ -192,15 +192,20 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
   }
   const H5In f(p.checkpoint);
   // The DEM state's layout: a checkpoint of an lbdem whose contact records had another shape is
-  // refused here, before anything is written.
-  if (const std::int64_t layout = f.attr_int("layout_version", "/dem");
-      layout != dem::DemSolver::kCheckpointLayout)
-    throw refuse(name + " holds the DEM state in layout " + std::to_string(layout) +
-                     ", this lbdem reads layout " +
-                     std::to_string(dem::DemSolver::kCheckpointLayout) +
-                     " (it was written by another lbdem build)",
-                 "finish the run with the lbdem that began it, or " + fresh);
-  p.time_s = f.attr_double("time_s", "/dem");
+  // refused here, before anything is written. A run without particles has no DEM state.
+  const bool particles = f.has("/dem");
+  if (particles) {
+    if (const std::int64_t layout = f.attr_int("layout_version", "/dem");
+        layout != dem::DemSolver::kCheckpointLayout)
+      throw refuse(name + " holds the DEM state in layout " + std::to_string(layout) +
+                       ", this lbdem reads layout " +
+                       std::to_string(dem::DemSolver::kCheckpointLayout) +
+                       " (it was written by another lbdem build)",
+                   "finish the run with the lbdem that began it, or " + fresh);
+    p.time_s = f.attr_double("time_s", "/dem");
+  } else {
+    p.time_s = f.attr_double("time_s");
+  }
   // Its origin: scenario, physics, lattice.
   if (!f.has_attr("config_hash", kRunGroup)) {
     p.warnings.push_back("warning: " + name +
@@ -253,7 +258,9 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
   const bool gas = f.has("/fluid");
   for (std::size_t k = 0; k < snapshots; ++k)
     for (const char* kind : {"particles", "fluid"}) {
-      if (std::string(kind) == "fluid" && !gas) continue;
+      if ((std::string(kind) == "fluid" && !gas) ||
+          (std::string(kind) == "particles" && !particles))
+        continue;
       char file[64];
       std::snprintf(file, sizeof file, "snapshots/%s_%06zu.h5", kind, k);
       if (!fs::exists(dir + "/" + file))

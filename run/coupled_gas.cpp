@@ -86,6 +86,12 @@ void CoupledGas::advance(dem::DemSolver& s, const std::function<bool()>& stop) {
   }
 }
 
+void CoupledGas::step_alone() {
+  if (coupler_) throw std::logic_error("CoupledGas::step_alone: the gas is coupled to particles");
+  if (before_gas_step_) before_gas_step_(time());
+  gas_->step();
+}
+
 std::int64_t CoupledGas::steps_due(std::int64_t n) const {
   // The gas leads: by whole exchange intervals when coupled, else by the DEM step it holds.
   const std::int64_t m = sub_.dem_per_gas, k = interval_.dem_steps;
@@ -109,6 +115,10 @@ void CoupledGas::save(H5Out& f) const {
   f.write("/coupling_interval/beta", st.beta);
   f.write("/coupling_interval/f_grad", st.f_grad);
   f.write("/coupling_interval/velocity_sum", st.velocity_sum);
+}
+
+void CoupledGas::load_alone(const H5In& f) {
+  load_gas(f, *gas_);
 }
 
 void CoupledGas::load(const H5In& f, dem::DemSolver& s) {

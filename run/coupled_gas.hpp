@@ -44,6 +44,13 @@ class CoupledGas {
   /// exchange interval that starts there; returns early, between gas steps, when `stop` says so,
   /// leaving behind(s) true.
   void advance(dem::DemSolver& s, const std::function<bool()>& stop);
+  /// In a run without particles the gas keeps the clock: one gas step (std::logic_error when
+  /// coupled).
+  void step_alone();
+  /// The gas's own time and step length [s].
+  double time() const { return double(gas_->steps()) * dt_; }
+  double dt() const { return dt_; }
+
   /// Gas steps done when the DEM stands at step n.
   std::int64_t steps_due(std::int64_t n) const;
   /// The gas stopped short of the steps the coming DEM step needs (a stop between gas steps).
@@ -57,6 +64,8 @@ class CoupledGas {
   /// has none or holds it in another precision), a check that its step count is the one the DEM's
   /// implies (any other means a different time step) and an interval stopped part-way.
   void load(const H5In& f, dem::DemSolver& s);
+  /// From the checkpoint of a run without particles: the gas alone.
+  void load_alone(const H5In& f);
 
  private:
   std::unique_ptr<lbm::LbmSolver> gas_;

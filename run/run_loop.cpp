@@ -61,8 +61,16 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
 }
 
 RunLoop::RunLoop(dem::DemSolver& solver, OutputSettings out, RunParts parts)
-    : solver_(solver), out_(out), parts_(std::move(parts)) {
-  const double dt = solver_.settings().dt;
+    : RunLoop(out, std::move(parts), &solver) {}
+
+RunLoop::RunLoop(OutputSettings out, RunParts parts) : RunLoop(out, std::move(parts), nullptr) {}
+
+RunLoop::RunLoop(OutputSettings out, RunParts parts, dem::DemSolver* dem)
+    : dem_(dem), out_(out), parts_(std::move(parts)) {
+  if (!dem_ && (!parts_.gas || parts_.gas->coupler()))
+    throw std::invalid_argument(
+        "RunLoop: a run without particles needs a gas that is not coupled to particles");
+  const double dt = this->dt();
   const std::int64_t cycle = parts_.gas ? parts_.gas->cycle() : 1;
   const auto whole_cycles = [&](std::int64_t n) { return (n + cycle - 1) / cycle * cycle; };
   const auto steps = [&](double interval) {
@@ -74,7 +82,23 @@ RunLoop::RunLoop(dem::DemSolver& solver, OutputSettings out, RunParts parts)
                           ? steps(out_.checkpoint_interval)
                           : 0;
   last_step_ = whole_cycles(std::llround(out_.end_time / dt));
-  if (parts_.watch.on) solver_.set_speed_limit(parts_.watch.max_speed);
+  if (dem_ && parts_.watch.on) dem_->set_speed_limit(parts_.watch.max_speed);
+}
+
+Instant RunLoop::now() const {
+  if (dem_) return {dem_->time(), dem_->steps()};
+  return {parts_.gas->time(), parts_.gas->gas().steps()};
+}
+
+double RunLoop::dt() const {
+  return dem_ ? dem_->settings().dt : parts_.gas->dt();
+}
+
+void RunLoop::step_clock() {
+  if (dem_)
+    dem_->step();
+  else
+    parts_.gas->step_alone();
 }
 
 namespace {
@@ -108,15 +132,16 @@ void RunLoop::diverged(Progress& progress, const std::string& msg) const {
 }
 
 std::optional<std::string> RunLoop::observer_health() {
+  const Instant t = now();
   for (Observer* o : parts_.observers)
-    if (auto msg = o->health(solver_)) return msg;
+    if (auto msg = o->health(t)) return msg;
   return std::nullopt;
 }
 
 void RunLoop::check_health(Progress& progress, double stored0) {
   if (auto msg = observer_health()) diverged(progress, *msg);
   if (auto msg = dem_health(stored0)) diverged(progress, *msg);
-  last_sound_time_ = solver_.time();
+  last_sound_time_ = now().time_s;
 }
 
 namespace {
@@ -178,11 +203,12 @@ std::string particle_text(std::int64_t id, const Vec3& x, const Vec3& v, const V
 
 std::optional<std::string> RunLoop::dem_health(double stored0) const {
   const DemWatch& w = parts_.watch;
-  if (!w.on) return std::nullopt;
-  const auto& p = solver_.particles();
-  const double dt = solver_.settings().dt;
-  const std::string at = "DEM diverged at t = " + to_text(solver_.time()) + " s (DEM step " +
-                         std::to_string(solver_.steps()) + "): ";
+  if (!dem_ || !w.on) return std::nullopt;
+  const dem::DemSolver& solver = *dem_;
+  const auto& p = solver.particles();
+  const double dt = solver.settings().dt;
+  const std::string at = "DEM diverged at t = " + to_text(solver.time()) + " s (DEM step " +
+                         std::to_string(solver.steps()) + "): ";
   const std::string kept = "; the last checkpoint and output are kept; fix: ";
   // The first unsound particle in storage order (the same for any thread count).
   const double limit2 = w.max_speed * w.max_speed;
@@ -199,7 +225,7 @@ std::optional<std::string> RunLoop::dem_health(double stored0) const {
   }
   // The energy balance against the energy moved: a reference the potential energy's zero does
   // not shift. The floor covers the round-off of the potential energy's sums.
-  const dem::EnergyTotals e = solver_.energy();
+  const dem::EnergyTotals e = solver.energy();
   const double error = e.stored() + e.dissipated() - e.injected(stored0);
   const double moved = e.kinetic() + e.elastic + e.dissipated() + std::abs(e.wall_work) +
                        std::abs(e.external_work) + std::abs(e.stiffness_change) +
@@ -217,13 +243,13 @@ std::optional<std::string> RunLoop::dem_health(double stored0) const {
 }
 
 void RunLoop::dem_alarm(Progress& progress) {
-  const dem::DemAlarm& a = *solver_.alarm();
+  const dem::DemAlarm& a = *dem_->alarm();
   const DemWatch& w = parts_.watch;
   std::string msg = "DEM diverged at t = " + to_text(a.time) + " s (DEM step " +
                     std::to_string(a.step) + ", after its half kick and drift): " +
                     particle_text(a.id, a.x, a.v, a.omega, a.force, a.torque, w) +
                     "; the last checkpoint and output are kept; fix: " +
-                    dem_fix(w, solver_.settings().dt, a.finite);
+                    dem_fix(w, dem_->settings().dt, a.finite);
   // A coupled run names the side that failed first: the DEM is checked at every step, the gas at
   // outputs, so the gas is looked at now as well.
   if (parts_.gas) {
@@ -309,58 +335,63 @@ const std::vector<std::string> kColumns = {"time_s",
                                            "neighbour_rebuilds"};
 }  // namespace
 
-const std::vector<std::string>& loop_columns() {
-  return kColumns;
+const std::vector<std::string>& loop_columns(bool particles) {
+  static const std::vector<std::string> clock_only = {kColumns.front()};
+  return particles ? kColumns : clock_only;
 }
 
 void RunLoop::write_row(double stored0, bool regular) {
-  const auto e = solver_.energy();
-  // Collisions begun per second since the previous row.
-  const double span = solver_.time() - prev_t_;
-  const auto rate = [&](std::int64_t now, std::int64_t prev) {
-    return span > 0 ? double(now - prev) / span : 0.0;
-  };
-  const double injected = e.injected(stored0);
-  std::vector<double> row = {solver_.time(),
-                             double(solver_.particles().size()),
-                             e.kinetic(),
-                             e.kinetic_translational,
-                             e.kinetic_rotational,
-                             e.potential,
-                             e.elastic,
-                             e.normal_damping,
-                             e.tangential_damping,
-                             e.sliding,
-                             e.rolling,
-                             e.stiffness_change,
-                             e.wall_work,
-                             injected - stored0,
-                             e.stored() + e.dissipated() - injected,
-                             double(solver_.contacts_pp()),
-                             double(solver_.contacts_pw()),
-                             double(solver_.collisions().started_pp()),
-                             double(solver_.collisions().started_pw()),
-                             rate(solver_.collisions().started_pp(), prev_pp_),
-                             rate(solver_.collisions().started_pw(), prev_pw_),
-                             solver_.mass_removed(),
-                             double(solver_.rebuilds())};
-  for (const Observer* o : parts_.observers) o->on_row(solver_, row);
+  const Instant t = now();
+  std::vector<double> row = {t.time_s};
+  if (dem_) {
+    const dem::DemSolver& s = *dem_;
+    const auto e = s.energy();
+    // Collisions begun per second since the previous row.
+    const double span = t.time_s - prev_t_;
+    const auto rate = [&](std::int64_t now, std::int64_t prev) {
+      return span > 0 ? double(now - prev) / span : 0.0;
+    };
+    const double injected = e.injected(stored0);
+    row.insert(row.end(), {double(s.particles().size()),
+                           e.kinetic(),
+                           e.kinetic_translational,
+                           e.kinetic_rotational,
+                           e.potential,
+                           e.elastic,
+                           e.normal_damping,
+                           e.tangential_damping,
+                           e.sliding,
+                           e.rolling,
+                           e.stiffness_change,
+                           e.wall_work,
+                           injected - stored0,
+                           e.stored() + e.dissipated() - injected,
+                           double(s.contacts_pp()),
+                           double(s.contacts_pw()),
+                           double(s.collisions().started_pp()),
+                           double(s.collisions().started_pw()),
+                           rate(s.collisions().started_pp(), prev_pp_),
+                           rate(s.collisions().started_pw(), prev_pw_),
+                           s.mass_removed(),
+                           double(s.rebuilds())});
+  }
+  for (const Observer* o : parts_.observers) o->on_row(t, row);
   ts_.row(row);
-  if (!regular) return;  // an end-of-run row does not start a new rate interval (see resume)
-  prev_t_ = solver_.time();
-  prev_pp_ = solver_.collisions().started_pp();
-  prev_pw_ = solver_.collisions().started_pw();
+  if (!regular || !dem_) return;  // an end-of-run row does not start a new rate interval (resume)
+  prev_t_ = t.time_s;
+  prev_pp_ = dem_->collisions().started_pp();
+  prev_pw_ = dem_->collisions().started_pw();
 }
 
-void RunLoop::write_snapshot(const std::string& dir) {
-  const auto& p = solver_.particles();
-  const int index = static_cast<int>(snapshot_times_.size());
+void RunLoop::write_particles(const std::string& dir) const {
+  const auto& p = dem_->particles();
+  const int index = static_cast<int>(snapshot_times_.size()) - 1;
   char name[64];
   std::snprintf(name, sizeof name, "snapshots/particles_%06d.h5", index);
   fs::create_directories(dir + "/snapshots");
   {
     H5Out f(dir + "/" + name);
-    f.attr("time_s", solver_.time());
+    f.attr("time_s", dem_->time());
     f.write("/position_m", p.x);
     f.write("/velocity_m_per_s", p.v);
     f.write("/angular_velocity_rad_per_s", p.omega);
@@ -368,22 +399,12 @@ void RunLoop::write_snapshot(const std::string& dir) {
     f.write("/force_N", p.force);
     f.write("/id", p.id);
     f.write("/material", p.material);
-    f.write("/coordination_number", solver_.coordination());
+    f.write("/coordination_number", dem_->coordination());
     // The XDMF's connectivity (one vertex cell per particle): 0 .. N-1.
     std::vector<std::int32_t> vertex(p.size());
     for (std::size_t k = 0; k < vertex.size(); ++k) vertex[k] = static_cast<std::int32_t>(k);
     f.write("/vertex_index", vertex);
     f.commit();
-  }
-  snapshot_times_.push_back(solver_.time());
-  if (!parts_.observers.empty()) {
-    std::vector<SnapshotArray> arrays;
-    for (const Observer* o : parts_.observers) {
-      auto a = o->snapshot_arrays();
-      arrays.insert(arrays.end(), std::make_move_iterator(a.begin()),
-                    std::make_move_iterator(a.end()));
-    }
-    for (Observer* o : parts_.observers) o->on_snapshot(dir, snapshot_times_, arrays);
   }
   // particles.h5 links every snapshot (HDF5 external links), rewritten atomically each time.
   H5Out master(dir + "/particles.h5");
@@ -397,6 +418,21 @@ void RunLoop::write_snapshot(const std::string& dir) {
   }
   master.commit();
   write_particles_xdmf(dir, snapshot_times_);
+}
+
+void RunLoop::write_snapshot(const std::string& dir) {
+  snapshot_times_.push_back(now().time_s);
+  // The particles' files first: an observer's snapshot (the gas's) may be read beside them.
+  if (dem_) write_particles(dir);
+  if (!parts_.observers.empty()) {
+    std::vector<SnapshotArray> arrays;
+    for (const Observer* o : parts_.observers) {
+      auto a = o->snapshot_arrays();
+      arrays.insert(arrays.end(), std::make_move_iterator(a.begin()),
+                    std::make_move_iterator(a.end()));
+    }
+    for (Observer* o : parts_.observers) o->on_snapshot(dir, snapshot_times_, arrays);
+  }
 }
 
 void RunLoop::write_checkpoint(const std::string& dir, double stored0, bool final) const {
@@ -418,7 +454,7 @@ void RunLoop::write_checkpoint(const std::string& dir, double stored0, bool fina
   RunManifest m;
   m.version = LBDEM_VERSION;
   if (identity_) m.scenario = identity_->scenario, m.config_hash = identity_->hash();
-  m.time_s = solver_.time();
+  m.time_s = now().time_s;
   m.end_time_s = out_.end_time;
   m.complete = final;
   if (log_) m.derived = log_->derived_values();
@@ -427,61 +463,80 @@ void RunLoop::write_checkpoint(const std::string& dir, double stored0, bool fina
 }
 
 void RunLoop::write_checkpoint_file(const std::string& file, double stored0, bool final) const {
+  const double t = now().time_s;
   H5Out f(file);
   f.checksum_datasets();
   f.attr("format", std::string(kCheckpointFormat));
-  f.attr("stored_energy_at_start_J", stored0);
+  f.attr("time_s", t);
   f.attr("timeseries_rows", std::int64_t(ts_.rows() - (extra_row_ ? 1 : 0)));
   std::vector<double> snaps = snapshot_times_;
   if (extra_snapshot_ && !snaps.empty()) snaps.pop_back();
   f.write("/snapshot_times_s", snaps);
-  f.write("/rate_reference", std::vector<double>{prev_t_, double(prev_pp_), double(prev_pw_)});
-  solver_.save(f);
+  if (dem_) {
+    f.attr("stored_energy_at_start_J", stored0);
+    f.write("/rate_reference", std::vector<double>{prev_t_, double(prev_pp_), double(prev_pw_)});
+    dem_->save(f);
+  }
   if (identity_)
-    save_identity(f, *identity_, std::int64_t(solver_.particles().size()),
+    save_identity(f, *identity_, dem_ ? std::int64_t(dem_->particles().size()) : 0,
                   final ? out_.end_time : 0.0);
   for (const Observer* o : parts_.observers) o->on_checkpoint(f);
   if (parts_.gas) parts_.gas->save(f);
-  cost_.save(f, solver_.time());
+  cost_.save(f, t);
   f.commit();
+}
+
+void RunLoop::resume(const std::string& file, double& stored0) {
+  const H5In f(file);
+  const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
+  snapshot_times_ = f.doubles("/snapshot_times_s");
+  if (dem_) {
+    stored0 = f.attr_double("stored_energy_at_start_J");
+    dem_->load(f);
+  }
+  for (Observer* o : parts_.observers) o->on_resume(f);
+  if (parts_.gas) {
+    if (dem_)
+      parts_.gas->load(f, *dem_);
+    else
+      parts_.gas->load_alone(f);
+  }
+  const Instant t = now();
+  cost_.resume(f, t.time_s);
+  ts_.open(dir_ + "/timeseries.csv", columns_, rows);
+  if (dem_) {
+    const auto prev = f.doubles("/rate_reference");
+    prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
+  }
+  last_sound_time_ = t.time_s;
+  log_->line("resumed from " + file + " at t = " + to_text(t.time_s) + " s (step " +
+             std::to_string(t.step) + ")");
 }
 
 int RunLoop::run(const RunContext& ctx) {
   log_ = ctx.log;
-  std::vector<std::string> cols = kColumns;
+  dir_ = ctx.dir;
+  columns_ = loop_columns(dem_ != nullptr);
   for (const Observer* o : parts_.observers) {
     const auto c = o->row_columns();
-    cols.insert(cols.end(), c.begin(), c.end());
+    columns_.insert(columns_.end(), c.begin(), c.end());
   }
   double stored0 = 0;
-  std::string ckpt = ctx.dir + "/checkpoint.h5";
   identity_ = ctx.identity;
   if (ctx.resume) {
     // The generation check_resume chose and verified (run_command), if it ran.
-    if (!ctx.checkpoint.empty()) ckpt = ctx.checkpoint;
-    const H5In f(ckpt);
-    stored0 = f.attr_double("stored_energy_at_start_J");
-    const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
-    snapshot_times_ = f.doubles("/snapshot_times_s");
-    solver_.load(f);
-    for (Observer* o : parts_.observers) o->on_resume(f);
-    if (parts_.gas) parts_.gas->load(f, solver_);
-    cost_.resume(f, solver_.time());
-    ts_.open(ctx.dir + "/timeseries.csv", cols, rows);
-    const auto prev = f.doubles("/rate_reference");
-    prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
-    last_sound_time_ = solver_.time();
-    ctx.log->line("resumed from " + ckpt + " at t = " + to_text(solver_.time()) + " s (step " +
-                  std::to_string(solver_.steps()) + ")");
+    resume(ctx.checkpoint.empty() ? ctx.dir + "/checkpoint.h5" : ctx.checkpoint, stored0);
   } else {
-    cost_.begin(solver_.time());
-    stored0 = solver_.energy().stored();
-    ts_.open(ctx.dir + "/timeseries.csv", cols, -1);
+    cost_.begin(now().time_s);
+    if (dem_) stored0 = dem_->energy().stored();
+    ts_.open(ctx.dir + "/timeseries.csv", columns_, -1);
     write_row(stored0);
     write_snapshot(ctx.dir);
     write_checkpoint(ctx.dir, stored0);
   }
-  Progress progress(out_.end_time, "particle-steps");
+  // The rate counts particle steps, or lattice cell updates without particles.
+  const double cells = dem_ ? 0.0 : double(parts_.gas->gas().grid().cells());
+  Progress progress(out_.end_time, dem_ ? "particle-steps" : "cell-updates");
   double work = 0;
   g_stop_signal = 0;
   g_old_handlers.int_ = std::signal(SIGINT, on_stop_signal);
@@ -489,30 +544,31 @@ int RunLoop::run(const RunContext& ctx) {
   // A stop waits for the next cycle boundary (at most cycle - 1 DEM steps): only there do all the
   // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
   const std::int64_t cycle = parts_.gas ? parts_.gas->cycle() : 1;
-  while (solver_.steps() < last_step_) {
+  while (now().step < last_step_) {
     // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (the gas then
     // stands behind the coming DEM step; its checkpoint carries the rest).
-    bool stop = g_stop_signal && solver_.steps() % cycle == 0;
+    bool stop = g_stop_signal && now().step % cycle == 0;
     if (!stop) {
-      for (Observer* o : parts_.observers) o->before_step(solver_);
-      if (parts_.gas) parts_.gas->advance(solver_, stop_requested);
-      stop = g_stop_signal && parts_.gas && parts_.gas->behind(solver_);
+      const Instant t = now();
+      for (Observer* o : parts_.observers) o->before_step(t);
+      if (parts_.gas && dem_) parts_.gas->advance(*dem_, stop_requested);
+      stop = g_stop_signal && parts_.gas && dem_ && parts_.gas->behind(*dem_);
     }
     if (stop) {
       extra_row_ = extra_snapshot_ = false;
       check_health(progress, stored0);
       write_checkpoint(ctx.dir, stored0);
-      solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
+      if (dem_) dem_->collisions().write(ctx.dir + "/collisions.h5", dem_->time());
       progress.finish();
       restore_signals();
       log_cost(*ctx.log, ctx.dir);
       throw Interrupted("stopped by signal " + std::to_string(int(g_stop_signal)) +
-                        " at t = " + to_text(solver_.time()) + " s; checkpoint written");
+                        " at t = " + to_text(now().time_s) + " s; checkpoint written");
     }
-    solver_.step();
-    if (solver_.alarm()) dem_alarm(progress);
-    work += double(solver_.particles().size());
-    const std::int64_t s = solver_.steps();
+    step_clock();
+    if (dem_ && dem_->alarm()) dem_alarm(progress);
+    work += dem_ ? double(dem_->particles().size()) : cells;
+    const std::int64_t s = now().step;
     const bool last = s == last_step_;
     // Rows and snapshots written only because the run ends here are not kept by a resume, so that
     // a resumed series equals an uninterrupted one.
@@ -526,20 +582,26 @@ int RunLoop::run(const RunContext& ctx) {
     if (snapshot) write_snapshot(ctx.dir);
     if (checkpoint) {
       write_checkpoint(ctx.dir, stored0, last);
-      solver_.collisions().write(ctx.dir + "/collisions.h5", solver_.time());
+      if (dem_) dem_->collisions().write(ctx.dir + "/collisions.h5", dem_->time());
     }
     lap.to(Phase::output);
-    progress.update(solver_.time(), work);
+    progress.update(now().time_s, work);
   }
   restore_signals();
-  progress.update(solver_.time(), work, true);
+  progress.update(now().time_s, work, true);
   progress.finish();
-  const auto e = solver_.energy();
-  const double injected = e.injected(stored0);
-  ctx.log->line("finished at t = " + to_text(solver_.time()) + " s after " +
-                std::to_string(solver_.steps()) + " steps; energy balance error " +
-                to_text(e.stored() + e.dissipated() - injected) + " J of " +
-                to_text(injected - e.stored()) + " J dissipated or stored away");
+  const Instant end = now();
+  if (dem_) {
+    const auto e = dem_->energy();
+    const double injected = e.injected(stored0);
+    ctx.log->line("finished at t = " + to_text(end.time_s) + " s after " +
+                  std::to_string(end.step) + " steps; energy balance error " +
+                  to_text(e.stored() + e.dissipated() - injected) + " J of " +
+                  to_text(injected - e.stored()) + " J dissipated or stored away");
+  } else {
+    ctx.log->line("finished at t = " + to_text(end.time_s) + " s after " +
+                  std::to_string(end.step) + " gas steps");
+  }
   log_cost(*ctx.log, ctx.dir);
   return 0;
 }

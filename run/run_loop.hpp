@@ -1,10 +1,11 @@
 #pragma once
-// The time loop of every run: it steps the DEM and, with one, the gas (coupled_gas.hpp), and
-// writes timeseries.csv, particle snapshots (particles.h5 + .xdmf), collisions.h5, periodic
-// checkpoints and --resume, progress and the start-up banner. Output and checkpoint instants are
-// step counts, so a resumed run writes at the same steps as one that never stopped. A scenario
-// takes part through its observers (observer.hpp): columns, work before each step, its own state
-// in the checkpoint, snapshots beside the particles', and a health check.
+// The time loop of every run: it steps the DEM and, with one, the gas (coupled_gas.hpp), or, in a
+// run without particles, the gas alone, whose steps are then the clock; and writes timeseries.csv,
+// particle snapshots (particles.h5 + .xdmf), collisions.h5, periodic checkpoints and --resume,
+// progress and the start-up banner. Output and checkpoint instants are step counts, so a resumed
+// run writes at the same steps as one that never stopped. A scenario takes part through its
+// observers (observer.hpp): columns, work before each step, its own state in the checkpoint,
+// snapshots beside the particles', and a health check.
 #include <limits>
 #include <optional>
 #include <random>
@@ -104,12 +105,29 @@ struct RunParts {
 class RunLoop {
  public:
   RunLoop(dem::DemSolver& solver, OutputSettings out, RunParts parts = {});
+  /// A run without particles: the gas (parts.gas) keeps the clock, one step per gas step; no
+  /// particle snapshots, collisions.h5 or DEM columns. std::invalid_argument if parts.gas is null
+  /// or coupled.
+  RunLoop(OutputSettings out, RunParts parts);
   /// Runs to end_time (from the checkpoint if ctx.resume). Returns 0.
   int run(const RunContext& ctx);
 
  private:
+  /// The clock: the DEM's, or the gas's in a run without particles.
+  Instant now() const;
+  double dt() const;
+  void step_clock();
+
+  RunLoop(OutputSettings out, RunParts parts, dem::DemSolver* dem);
   void write_row(double stored0, bool regular = true);
+  /// Records the snapshot instant; writes the particles' snapshot (with particles) and calls the
+  /// observers' on_snapshot.
   void write_snapshot(const std::string& dir);
+  /// snapshots/particles_N.h5, particles.h5 linking them all, and particles.xdmf.
+  void write_particles(const std::string& dir) const;
+  /// Loads the state of checkpoint `file` (the solvers', the observers', the series' and the
+  /// snapshots' counts) and reopens timeseries.csv after its rows.
+  void resume(const std::string& file, double& stored0);
   /// Keeps the current checkpoint as the previous generation, writes the new one and verifies
   /// it (reopened: format, every dataset against its checksum: checkpoint_check.hpp). `final`:
   /// written at run.end_time, which a resume of the finished run then recognises.
@@ -128,7 +146,7 @@ class RunLoop {
   [[noreturn]] void dem_alarm(Progress& progress);
   [[noreturn]] void diverged(Progress& progress, const std::string& msg) const;
 
-  dem::DemSolver& solver_;
+  dem::DemSolver* dem_ = nullptr;  // null in a run without particles
   OutputSettings out_;
   RunParts parts_;
   std::int64_t every_row_ = 1, every_snapshot_ = 1, every_checkpoint_ = 0, last_step_ = 0;
@@ -138,14 +156,16 @@ class RunLoop {
   std::int64_t prev_pp_ = 0, prev_pw_ = 0;
   double last_sound_time_ = 0;  // the last output instant that passed every check [s]
   TimeSeries ts_;
+  std::string dir_;                   // the run folder (while run() runs)
+  std::vector<std::string> columns_;  // timeseries.csv's: the loop's and the observers'
   Log* log_ = nullptr;
   const RunIdentity* identity_ = nullptr;
   RunCostMeter cost_;
 };
 
 /// The loop's own timeseries.csv columns, which every scenario's columns begin with (a scenario
-/// adds its observers' row_columns after them).
-const std::vector<std::string>& loop_columns();
+/// adds its observers' row_columns after them): time_s and, with particles, the DEM's.
+const std::vector<std::string>& loop_columns(bool particles = true);
 
 /// Derived DEM numbers for the start-up banner. The radius range counts a feed's
 /// radii (feed_r_min > 0) with the particles present at the start; `watch` adds the watchdog's

@@ -299,11 +299,12 @@ int run_scenario(const RunOptions& opt) {
   log_phase_times(log, RunClock::now() - t0);
   if (ctx.plots) make_plots(dir, log);
   write_file_atomic(dir + "/status", "finished\n");
-  std::cout << "run folder: " << fs::absolute(dir).string() << "\n"
-            << "  config.toml log.txt timeseries.csv particles.h5 particles.xdmf collisions.h5 "
-               "checkpoint.h5"
-            << (fs::exists(dir + "/fluid.h5") ? " fluid.h5 fluid.xdmf" : "")
-            << (ctx.plots ? " energy_budget.png kinetic_energy.png" : "") << "\n";
+  std::cout << "run folder: " << fs::absolute(dir).string() << "\n ";
+  for (const char* file : {"config.toml", "log.txt", "timeseries.csv", "particles.h5",
+                           "particles.xdmf", "collisions.h5", "checkpoint.h5", "fluid.h5",
+                           "fluid.xdmf", "energy_budget.png", "kinetic_energy.png", "gas.png"})
+    if (fs::exists(dir + "/" + file)) std::cout << " " << file;
+  std::cout << "\n";
   return rc;
 }
 

@@ -6,6 +6,9 @@ usage: /usr/bin/python3 tools/plot_run.py RUN_DIR
 Writes into RUN_DIR:
   energy_budget.png   every energy term by name, and the balance error relative to the energy moved
   kinetic_energy.png  the particles' kinetic energy (total, translational, rotational; log axis)
+                      (these two only for a run with particles)
+  gas.png             a run without particles: the gas's mean speed, kinetic energy and mass
+                      balance error
   wall_loads.png      the particles' forces and torques on each wall, and the gas's force on the
                       walls (when the series has such columns)
 and, by the config's scenario:
@@ -484,6 +487,26 @@ def torque(cols, t, tlabel, run_name, out, cfg):
     save(fig, os.path.join(out, "torque.png"))
 
 
+def gas(cols, t, tlabel, run_name, out):
+    """A run without particles: its gas's own columns."""
+    rows = [(key, label) for key, label in
+            [("gas_mean_speed_m_s", "mean gas speed [m/s]"),
+             ("gas_kinetic_energy_J", "gas kinetic energy [J]"),
+             ("gas_mass_balance_error_kg", "gas mass balance error [kg]")] if key in cols]
+    if not rows:
+        return
+    fig, axes = plt.subplots(len(rows), 1, figsize=(10, 2.6 * len(rows) + 1), sharex=True,
+                             squeeze=False)
+    for ax, (key, label) in zip(axes[:, 0], rows):
+        ax.plot(t, cols[key], color="C0", lw=1.5)
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axes[0, 0].set_title(f"{run_name}: gas")
+    axes[-1, 0].set_xlabel(tlabel)
+    fig.tight_layout()
+    save(fig, os.path.join(out, "gas.png"))
+
+
 def jet_mill(cols, t, tlabel, run_name, out):
     fig, (top, bot) = plt.subplots(2, 1, figsize=(10, 7), sharex=True)
     if "kinetic_energy_J" in cols:
@@ -538,8 +561,11 @@ def main(argv):
         t, tlabel = np.arange(data.shape[0], dtype=float), "output row [-]"
     cfg = read_config(run)
     run_name = os.path.basename(os.path.normpath(os.path.abspath(run)))
-    energy_budget(cols, t, tlabel, run_name, run, cfg)
-    kinetic_energy(cols, t, tlabel, run_name, run)
+    if "particles" in cols:
+        energy_budget(cols, t, tlabel, run_name, run, cfg)
+        kinetic_energy(cols, t, tlabel, run_name, run)
+    else:
+        gas(cols, t, tlabel, run_name, run)
     wall_loads(cols, names, t, tlabel, run_name, run)
     scenario = scenario_of(cfg, cols)
     if scenario == "fluidized_bed" and {"bed_height_m", "pressure_drop_Pa"} <= cols.keys():

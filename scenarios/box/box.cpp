@@ -359,8 +359,10 @@ void BoxScenario::ramp_inlets(double t) {
   }
 }
 
-void BoxScenario::before_step(dem::DemSolver& s) {
-  const double t = s.time();
+void BoxScenario::before_step(const run::Instant& now) {
+  if (gas_only_) return;
+  dem::DemSolver& s = *solver_;
+  const double t = now.time_s;
   // Insertions fall on whole multiples of llround(period / dt) steps, so the last one before
   // `end` may come up to a period early, when only rate x (t - start) is due: the first insertion
   // step after `end` delivers the rest (before, up to one period's mass was never fed: 0.6-1.0 %
@@ -369,7 +371,7 @@ void BoxScenario::before_step(dem::DemSolver& s) {
       (t <= inflow_.end || inflow_.inserted < inflow_.mass_rate * (inflow_.end - inflow_.start))) {
     const std::int64_t every =
         std::max<std::int64_t>(1, std::llround(inflow_.period / s.settings().dt));
-    if (s.steps() % every == 0) {
+    if (now.step % every == 0) {
       const double target = inflow_.mass_rate * (std::min(t, inflow_.end) - inflow_.start);
       if (target > inflow_.inserted) {
         dem::FillRequest req;
@@ -396,17 +398,17 @@ void BoxScenario::before_step(dem::DemSolver& s) {
       }
     }
   }
-  if (outlet_.on && s.steps() % outlet_.every == 0) {
+  if (outlet_.on && now.step % outlet_.every == 0) {
     std::vector<std::uint32_t> out;
     const auto& p = s.particles();
     for (std::size_t k = 0; k < p.size(); ++k)
       if (inside(p.x[k], 0, outlet_.lo, outlet_.hi)) out.push_back(static_cast<std::uint32_t>(k));
     if (!out.empty()) s.remove_particles(out);
   }
-  warn_once(s);
+  warn_once(now);
 }
 
-void BoxScenario::warn_once(const dem::DemSolver& s) {
+void BoxScenario::warn_once(const run::Instant& now) {
   if (!log_) return;
   if (inflow_.behind_at >= 0 && !inflow_.behind_warned) {
     inflow_.behind_warned = true;
@@ -422,7 +424,7 @@ void BoxScenario::warn_once(const dem::DemSolver& s) {
     const auto& p = gas_->report().porosity;
     log_->line("warning: coupling: eps fell below coupling.eps_min = " +
                to_text(coupling_.settings.eps_min) + " in " + std::to_string(p.clipped) +
-               " cells at t = " + to_text(s.time()) + " s (lowest " + to_text(p.lowest) +
+               " cells at t = " + to_text(now.time_s) + " s (lowest " + to_text(p.lowest) +
                ", first at cell " + std::to_string(p.first[0]) + ", " + std::to_string(p.first[1]) +
                ", " + std::to_string(p.first[2]) +
                "); clipped there. A wider coupling.kernel_width smooths the bed");
@@ -430,8 +432,11 @@ void BoxScenario::warn_once(const dem::DemSolver& s) {
 }
 
 std::vector<std::string> BoxScenario::row_columns() const {
-  std::vector<std::string> c = wall_columns_;
-  c.push_back("mass_inserted_kg");
+  std::vector<std::string> c;
+  if (!gas_only_) {
+    c = wall_columns_;
+    c.push_back("mass_inserted_kg");
+  }
   if (gas_) {
     const auto cols = fluid_columns(fluid_);
     c.insert(c.end(), cols.begin(), cols.end());
@@ -445,7 +450,7 @@ std::vector<std::string> BoxScenario::row_columns() const {
 }
 
 std::vector<std::string> BoxScenario::columns() const {
-  std::vector<std::string> c = loop_columns();
+  std::vector<std::string> c = loop_columns(!gas_only_);
   const auto own = row_columns();
   c.insert(c.end(), own.begin(), own.end());
   if (extension_) {
@@ -455,16 +460,18 @@ std::vector<std::string> BoxScenario::columns() const {
   return c;
 }
 
-void BoxScenario::on_row(const dem::DemSolver& s, std::vector<double>& v) const {
-  for (const auto& w : s.walls()) {
-    Vec3 axis = Vec3::UnitZ();
-    if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
-    if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
-    if (const auto* b = std::get_if<dem::BoxWall>(&w.shape)) axis = b->motion.axis;
-    v.push_back(w.force[2]);
-    v.push_back(w.torque.dot(axis));
+void BoxScenario::on_row(const run::Instant& /*now*/, std::vector<double>& v) const {
+  if (!gas_only_) {
+    for (const auto& w : solver_->walls()) {
+      Vec3 axis = Vec3::UnitZ();
+      if (const auto* c = std::get_if<dem::CylinderWall>(&w.shape)) axis = c->axis;
+      if (const auto* m = std::get_if<dem::MeshWall>(&w.shape)) axis = m->motion.axis;
+      if (const auto* b = std::get_if<dem::BoxWall>(&w.shape)) axis = b->motion.axis;
+      v.push_back(w.force[2]);
+      v.push_back(w.torque.dot(axis));
+    }
+    v.push_back(inflow_.inserted);
   }
-  v.push_back(inflow_.inserted);
   if (gas_) {
     const auto g = fluid_values(gas_->gas(), fluid_);
     v.insert(v.end(), g.begin(), g.end());
@@ -472,7 +479,7 @@ void BoxScenario::on_row(const dem::DemSolver& s, std::vector<double>& v) const 
   if (coupled_) {
     const auto& r = gas_->report();
     v.insert(v.end(), {r.drag[0], r.drag[1], r.drag[2], r.pressure_force[2], r.mean_eps_particles,
-                       double(r.porosity.clipped), s.energy().external_work});
+                       double(r.porosity.clipped), solver_->energy().external_work});
   }
 }
 
@@ -494,11 +501,11 @@ void BoxScenario::on_snapshot(const std::string& dir, const std::vector<double>&
   if (gas_) write_fluid_snapshot(dir, gas_->gas(), fluid_, times, gas_arrays);
 }
 
-std::optional<std::string> BoxScenario::health(const dem::DemSolver& s) {
+std::optional<std::string> BoxScenario::health(const run::Instant& now) {
   if (!gas_) return std::nullopt;
-  auto error = check_fluid_health(gas_->gas(), fluid_, s.time(), s.steps());
+  auto error = check_fluid_health(gas_->gas(), fluid_, now.time_s, now.step);
   if (!error && !mach_warned_ && log_)
-    if (auto w = check_fluid_mach(gas_->gas(), fluid_, s.time())) {
+    if (auto w = check_fluid_mach(gas_->gas(), fluid_, now.time_s)) {
       mach_warned_ = true;
       log_->line(*w);
     }
@@ -523,8 +530,8 @@ int BoxScenario::run(const RunContext& ctx) {
   if (extension_) parts.observers.push_back(extension_);
   parts.gas = gas_.get();
   parts.watch = watch();
-  RunLoop loop(*solver_, out_, std::move(parts));
-  return loop.run(ctx);
+  if (gas_only_) return RunLoop(out_, std::move(parts)).run(ctx);
+  return RunLoop(*solver_, out_, std::move(parts)).run(ctx);
 }
 
 }  // namespace lbdem::scenarios

@@ -10,7 +10,8 @@
 // time step). With [coupling] as well (coupling_config.hpp) gas and particles exchange momentum
 // (coupling/coupler.hpp) once per exchange interval of whole cycles: the gas runs the interval's
 // steps first, then the DEM. A box with [fluid] and no particles, fills or [[materials]] is a pure
-// gas run: the DEM then only keeps the clock, one DEM step per gas step, and takes no [dem] table.
+// gas run: the gas's steps are the clock (run::RunLoop without particles) and it takes no [dem]
+// table; its timeseries.csv holds time_s and the gas's columns, and it writes no particle files.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -74,13 +75,13 @@ class BoxScenario : public Scenario, public run::Observer {
 
   // The box's part in the run (run::Observer). before_step is public for tests that step by hand.
   std::vector<std::string> row_columns() const override;
-  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
-  void before_step(dem::DemSolver& s) override;
+  void on_row(const run::Instant& now, std::vector<double>& row) const override;
+  void before_step(const run::Instant& now) override;
   void on_checkpoint(H5Out& f) const override;
   void on_resume(const H5In& f) override;
   void on_snapshot(const std::string& dir, const std::vector<double>& times,
                    const std::vector<run::SnapshotArray>& gas_arrays) override;
-  std::optional<std::string> health(const dem::DemSolver& s) override;
+  std::optional<std::string> health(const run::Instant& now) override;
 
   const OutputSettings& output() const override { return out_; }
   std::array<std::int64_t, 3> lattice() const override;
@@ -94,7 +95,7 @@ class BoxScenario : public Scenario, public run::Observer {
   /// Builds the exchange anew for the gas's current solid cells. No-op without [coupling].
   void rebuild_coupler();
   /// The run's warnings that are said once (a feed behind its rate, clipped gas fractions).
-  void warn_once(const dem::DemSolver& s);
+  void warn_once(const run::Instant& now);
 
   struct Inflow {
     bool on = false;

@@ -54,7 +54,7 @@ std::vector<std::string> FluidizedBedScenario::row_columns() const {
   return {"bed_height_m", "pressure_drop_Pa", "bed_voidage"};
 }
 
-void FluidizedBedScenario::on_row(const dem::DemSolver& /*s*/, std::vector<double>& row) const {
+void FluidizedBedScenario::on_row(const run::Instant& /*now*/, std::vector<double>& row) const {
   const double h = bed_height();
   row.insert(row.end(), {h, pressure_drop(), bed_voidage(h)});
 }

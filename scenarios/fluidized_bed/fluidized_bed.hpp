@@ -36,7 +36,7 @@ class FluidizedBedScenario : public Scenario, public run::Observer {
   double pressure_drop() const;
   double bed_voidage(double bed_height) const;
   std::vector<std::string> row_columns() const override;
-  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
+  void on_row(const run::Instant& now, std::vector<double>& row) const override;
 
  private:
   void bed_banner(Log& log) const;

@@ -83,7 +83,7 @@ std::vector<std::string> JetMillScenario::row_columns() const {
           "gas_radial_mass_flow_mid_kg_s"};
 }
 
-void JetMillScenario::on_row(const dem::DemSolver& /*s*/, std::vector<double>& row) const {
+void JetMillScenario::on_row(const run::Instant& /*now*/, std::vector<double>& row) const {
   std::vector<Vec3> u;
   std::vector<double> rho;
   box_.gas()->velocity(u);

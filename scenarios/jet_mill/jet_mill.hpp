@@ -61,7 +61,7 @@ class JetMillScenario : public Scenario, public run::Observer {
   /// The cylinder of radial_mass_flow() nearest R / 2.
   std::size_t mid_ring() const;
   std::vector<std::string> row_columns() const override;
-  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
+  void on_row(const run::Instant& now, std::vector<double>& row) const override;
   std::vector<run::SnapshotArray> snapshot_arrays() const override;
 
  private:

@@ -243,13 +243,13 @@ std::vector<std::string> RheometerScenario::row_columns() const {
   return kRheometerColumns;
 }
 
-void RheometerScenario::on_row(const dem::DemSolver& s, std::vector<double>& row) const {
-  const auto& w = s.walls()[impeller_walls_.front()];
+void RheometerScenario::on_row(const run::Instant& now, std::vector<double>& row) const {
+  const auto& w = solver_->walls()[impeller_walls_.front()];
   double angle = 0;
   if (const auto* m = std::get_if<dem::MeshWall>(&w.shape))
-    angle = m->motion.omega * m->motion.travel_time(s.time());
+    angle = m->motion.omega * m->motion.travel_time(now.time_s);
   if (const auto* b = std::get_if<dem::BoxWall>(&w.shape))
-    angle = b->motion.omega * b->motion.travel_time(s.time());
+    angle = b->motion.omega * b->motion.travel_time(now.time_s);
   row.insert(row.end(), {drive_torque(), cup_torque(), floor_torque(), angular_momentum(), angle});
 }
 

@@ -50,7 +50,7 @@ class RheometerScenario : public Scenario, public run::Observer {
   double cup_torque() const;
   double floor_torque() const;
   std::vector<std::string> row_columns() const override;
-  void on_row(const dem::DemSolver& s, std::vector<double>& row) const override;
+  void on_row(const run::Instant& now, std::vector<double>& row) const override;
 
  private:
   std::unique_ptr<dem::DemSolver> solver_;

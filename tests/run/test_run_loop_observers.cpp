@@ -16,6 +16,7 @@
 #include "core/h5.hpp"
 #include "core/log.hpp"
 #include "helpers/dem_setup.hpp"
+#include "lbm/lbm_solver.hpp"
 #include "run/run_loop.hpp"
 
 using namespace lbdem;
@@ -34,10 +35,10 @@ struct StepCounter : run::Observer {
   std::size_t arrays_seen = 0, snapshots = 0;
 
   std::vector<std::string> row_columns() const override { return {name + "_steps"}; }
-  void on_row(const dem::DemSolver& /*s*/, std::vector<double>& row) const override {
+  void on_row(const run::Instant& /*now*/, std::vector<double>& row) const override {
     row.push_back(steps);
   }
-  void before_step(dem::DemSolver& /*s*/) override {
+  void before_step(const run::Instant& /*now*/) override {
     steps += 1;
     if (order && order->size() < 4) order->push_back(name);
   }
@@ -51,8 +52,8 @@ struct StepCounter : run::Observer {
     arrays_seen = arrays.size();
     snapshots = times.size();
   }
-  std::optional<std::string> health(const dem::DemSolver& s) override {
-    if (s.time() >= stop_at) return name + " objects at t = " + std::to_string(s.time());
+  std::optional<std::string> health(const run::Instant& now) override {
+    if (now.time_s >= stop_at) return name + " objects at t = " + std::to_string(now.time_s);
     return std::nullopt;
   }
 };
@@ -94,18 +95,48 @@ std::string fresh_dir(const std::string& name) {
 
 // Runs the beads to `end` in `dir` with observers a and b (resuming if asked); returns the loop's
 // exit code.
-int run_beads(const std::string& dir, double end, bool resume, StepCounter& a, StepCounter& b) {
-  auto s = beads();
+// Runs `loop` quietly in `dir`, from its checkpoint if `resume`; returns its exit code.
+int run_in(run::RunLoop& loop, const std::string& dir, bool resume) {
   Log log;
   log.set_quiet(true);
   run::RunContext ctx;
   ctx.dir = dir;
   ctx.resume = resume;
   ctx.log = &log;
+  return loop.run(ctx);
+}
+
+int run_beads(const std::string& dir, double end, bool resume, StepCounter& a, StepCounter& b) {
+  auto s = beads();
   run::RunParts parts;
   parts.observers = {&a, &b};
   run::RunLoop loop(*s, output(end), std::move(parts));
-  return loop.run(ctx);
+  return run_in(loop, dir, resume);
+}
+
+// A periodic 4^3 gas driven by a body force, alone: its steps are the run's clock. `ramp_times`
+// collects the start time of every gas step.
+std::unique_ptr<run::CoupledGas> lone_gas(std::vector<double>* ramp_times) {
+  lbm::LbmSettings s;
+  s.nx = s.ny = s.nz = 4;
+  s.collision = lbm::Bgk::from_tau(0.8);
+  s.body_force = Vec3(1e-6, 0, 0);
+  auto g = std::make_unique<lbm::LbmSolver>(s);
+  g->initialize([](int, int, int, double& rho, Vec3& u) { rho = 1, u = Vec3::Zero(); });
+  return std::make_unique<run::CoupledGas>(std::move(g), run::conform_dem_step(kDt, kDt), kDt,
+                                           [ramp_times](double t) {
+                                             if (ramp_times) ramp_times->push_back(t);
+                                           });
+}
+
+int run_gas(const std::string& dir, double end, bool resume, StepCounter& a,
+            std::vector<double>* ramp_times = nullptr) {
+  auto gas = lone_gas(ramp_times);
+  run::RunParts parts;
+  parts.observers = {&a};
+  parts.gas = gas.get();
+  run::RunLoop loop(output(end), std::move(parts));
+  return run_in(loop, dir, resume);
 }
 
 }  // namespace
@@ -171,4 +202,40 @@ TEST_CASE("run loop: an observer's health message stops the run as diverged, the
   CHECK(std::stod(last.substr(0, last.find(','))) == Approx(0.004).margin(1e-9));
   CHECK(H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem") == Approx(0.004).margin(1e-9));
   fs::remove_all(dir);
+}
+
+TEST_CASE(
+    "run loop: a run without particles is clocked by its gas, writes no particle files, and "
+    "resumes to the same gas",
+    "[run]") {
+  const std::string whole = fresh_dir("gas_whole"), parts = fresh_dir("gas_parts");
+  StepCounter a("a");
+  std::vector<double> ramp_times;
+  REQUIRE(run_gas(whole, 0.01, false, a, &ramp_times) == 0);
+  CHECK(a.steps == 1000);  // once per gas step: 0.01 s of 1e-5 s
+  REQUIRE(ramp_times.size() == 1000);
+  CHECK(ramp_times[999] == Approx(999 * kDt).margin(1e-15));  // the step's start time
+  CHECK(a.snapshots == 3);                                    // at 0, 0.005 and 0.01 s
+  const std::string csv = read_text(whole + "/timeseries.csv");
+  CHECK(csv.substr(0, csv.find('\n')) == "time_s,a_steps");
+  for (const char* file : {"particles.h5", "particles.xdmf", "collisions.h5"})
+    CHECK_FALSE(fs::exists(whole + "/" + file));
+  {
+    const H5In f(whole + "/checkpoint.h5");
+    CHECK_FALSE(f.has("/dem"));
+    CHECK(f.attr_double("time_s") == Approx(0.01).margin(1e-12));
+    CHECK(f.attr_int("steps", "/fluid") == 1000);
+  }
+  StepCounter a1("a"), a2("a");
+  REQUIRE(run_gas(parts, 0.006, false, a1) == 0);
+  REQUIRE(run_gas(parts, 0.01, true, a2) == 0);
+  CHECK(a2.steps == 1000);
+  CHECK(read_text(parts + "/timeseries.csv") == csv);
+  CHECK(H5In(parts + "/checkpoint.h5").doubles("/fluid/populations") ==
+        H5In(whole + "/checkpoint.h5").doubles("/fluid/populations"));
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+
+  // Without a gas, or with one coupled to particles, there is no clock.
+  CHECK_THROWS_AS(run::RunLoop(output(0.01), run::RunParts{}), std::invalid_argument);
 }

@@ -57,7 +57,7 @@ hi = [0.02, 0.02, 0.01]
   const auto step_to = [&](double t) {
     while (s.time() < t) {
       const std::size_t before = s.particles().size();
-      box.before_step(s);
+      box.before_step({s.time(), s.steps()});
       if (s.particles().size() > before) last_insertion = s.time(), ++insertions;
       for (std::size_t k = before; k < s.particles().size(); ++k) inserted += s.particles().mass[k];
       s.step();
@@ -100,7 +100,7 @@ end = 0.0123
   const auto step_to = [&](double t) {
     while (s.time() < t) {
       const std::size_t before = s.particles().size();
-      box.before_step(s);
+      box.before_step({s.time(), s.steps()});
       if (s.particles().size() > before) last_insertion = s.time();
       s.step();
     }

@@ -113,23 +113,21 @@ TEST_CASE("an error's echo of a huge value is cut to one short line", "[scenario
 }
 
 TEST_CASE("an input error found once the run goes leaves no run folder", "[scenarios][input]") {
-  // A gas-only box whose periodic y is one cell thick: the first neighbour search finds it.
+  // A box whose periodic y (6 mm) is shorter than two neighbour cells of its 2.2 mm beads: the
+  // first neighbour search, in the first step, finds it.
+  const std::string thin =
+      " --set box.y_lo=periodic --set box.y_hi=periodic --set 'box.hi=[0.06,0.006,0.25]' --set "
+      "'fill=[{count = 50, lo = [0, 0, 0.03], hi = [0.06, 0.006, 0.25], material = \"glass\", "
+      "radius = {kind = \"uniform\", min = 1.8e-3, max = 2.2e-3}}]' --set run.end_time=0.01";
   const std::string out = tmpdir("thin_box");
-  const auto r = cli("run box --config " + std::string(LBDEM_SOURCE_DIR) +
-                     "/scenarios/box/presets/gas_channel.toml --set 'box.hi=[0.016,0.001,0.015]' "
-                     "--set run.end_time=0.1 --out " +
-                     out);
+  const auto r = cli("run box" + thin + " --out " + out);
   INFO(r.err);
   CHECK(r.code == 2);
-  CHECK(r.err.rfind("lbdem: error: 'domain' = periodic length 0.001 m", 0) == 0);
+  CHECK(r.err.rfind("lbdem: error: 'domain' = periodic length 0.006 m", 0) == 0);
   CHECK_FALSE(fs::exists(out));
   // An empty folder given as --out stays, empty.
   fs::create_directories(out);
-  CHECK(cli("run box --config " + std::string(LBDEM_SOURCE_DIR) +
-            "/scenarios/box/presets/gas_channel.toml --set 'box.hi=[0.016,0.001,0.015]' "
-            "--set run.end_time=0.1 --out " +
-            out)
-            .code == 2);
+  CHECK(cli("run box" + thin + " --out " + out).code == 2);
   CHECK(fs::is_directory(out));
   CHECK(fs::is_empty(out));
   fs::remove_all(out);

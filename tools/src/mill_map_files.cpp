@@ -68,53 +68,60 @@ std::string write_mill_maps(const MillMapOptions& o) {
   const MillAxis axis{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (hi[0] - lo[0])};
   const std::vector<JetRegion>& regions = o.jets;
 
-  // Particles: every sample of the window's snapshots.
+  // Particles: every sample of the window's snapshots (none in a run without particles).
   const std::string pmaster = dir + "/particles.h5";
-  if (!fs::is_regular_file(pmaster)) throw ToolError("no " + pmaster);
-  const auto ptimes = lbdem::H5In(pmaster).doubles("/time_s");
-  const auto window = in_window(ptimes, from, to);
-  if (window.empty())
-    throw ToolError("no particle snapshot in [" + num(from) + ", " + num(to) + "] s of " + dir +
-                    " (set output.snapshot_interval)");
-  const std::size_t n = std::size_t(std::ceil(2 * axis.radius / bin));
-  Bins2D map(axis.cx - axis.radius, axis.cy - axis.radius, bin, n);
-  Bins1D wall(0.0, wall_bin, std::size_t(std::ceil(axis.radius / wall_bin)));
+  const bool particles = fs::is_regular_file(pmaster);
+  if (!particles && !fs::is_regular_file(dir + "/fluid.h5"))
+    throw ToolError("no " + pmaster + " and no fluid.h5 in " + dir);
+  std::vector<double> ptimes;
+  std::vector<std::size_t> window;
   double all = 0, all_n = 0, jet = 0, jet_n = 0;
-  for (std::size_t k : window) {
-    const lbdem::H5In s(snapshot(dir, "particles", k));
-    const auto x = s.vec3s("/position_m"), v = s.vec3s("/velocity_m_per_s");
-    for (std::size_t p = 0; p < x.size(); ++p) {
-      const double speed = v[p].norm();
-      map.add(x[p].x(), x[p].y(), speed);
-      wall.add(axis.wall_distance(x[p]), speed);
-      all += speed, all_n += 1;
-      if (std::any_of(regions.begin(), regions.end(),
-                      [&](const JetRegion& j) { return j.contains(x[p]); }))
-        jet += speed, jet_n += 1;
+  std::string csv;
+  if (particles) {
+    ptimes = lbdem::H5In(pmaster).doubles("/time_s");
+    window = in_window(ptimes, from, to);
+    if (window.empty())
+      throw ToolError("no particle snapshot in [" + num(from) + ", " + num(to) + "] s of " + dir +
+                      " (set output.snapshot_interval)");
+    const std::size_t n = std::size_t(std::ceil(2 * axis.radius / bin));
+    Bins2D map(axis.cx - axis.radius, axis.cy - axis.radius, bin, n);
+    Bins1D wall(0.0, wall_bin, std::size_t(std::ceil(axis.radius / wall_bin)));
+    for (std::size_t k : window) {
+      const lbdem::H5In s(snapshot(dir, "particles", k));
+      const auto x = s.vec3s("/position_m"), v = s.vec3s("/velocity_m_per_s");
+      for (std::size_t p = 0; p < x.size(); ++p) {
+        const double speed = v[p].norm();
+        map.add(x[p].x(), x[p].y(), speed);
+        wall.add(axis.wall_distance(x[p]), speed);
+        all += speed, all_n += 1;
+        if (std::any_of(regions.begin(), regions.end(),
+                        [&](const JetRegion& j) { return j.contains(x[p]); }))
+          jet += speed, jet_n += 1;
+      }
     }
-  }
-  std::string csv = "x_m,y_m,mean_speed_m_per_s,samples\n";
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i)
-      if (map.samples(i, j) > 0)
-        csv += num(map.x(i)) + "," + num(map.y(j)) + "," + num(map.mean(i, j)) + "," +
-               num(map.samples(i, j)) + "\n";
-  lbdem::write_file_atomic(prefix + "_speed_map.csv", csv);
-  csv = "wall_distance_m,mean_speed_m_per_s,samples\n";
-  for (std::size_t k = 0; k < wall.size(); ++k)
-    if (wall.samples(k) > 0)
-      csv += num(wall.centre(k)) + "," + num(wall.mean(k)) + "," + num(wall.samples(k)) + "\n";
-  lbdem::write_file_atomic(prefix + "_wall_profile.csv", csv);
-  {
-    const std::size_t k = last_before(ptimes, to, "particle");
-    const lbdem::H5In s(snapshot(dir, "particles", k));
-    const auto x = s.vec3s("/position_m"), v = s.vec3s("/velocity_m_per_s");
-    const auto r = s.doubles("/radius_m");
-    csv = "x_m,y_m,z_m,radius_m,speed_m_per_s\n";
-    for (std::size_t p = 0; p < x.size(); ++p)
-      csv += num(x[p].x()) + "," + num(x[p].y()) + "," + num(x[p].z()) + "," + num(r[p]) + "," +
-             num(v[p].norm()) + "\n";
-    lbdem::write_file_atomic(prefix + "_positions.csv", csv);
+    csv = "x_m,y_m,mean_speed_m_per_s,samples\n";
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t i = 0; i < n; ++i)
+        if (map.samples(i, j) > 0)
+          csv += num(map.x(i)) + "," + num(map.y(j)) + "," + num(map.mean(i, j)) + "," +
+                 num(map.samples(i, j)) + "\n";
+    lbdem::write_file_atomic(prefix + "_speed_map.csv", csv);
+    csv = "wall_distance_m,mean_speed_m_per_s,samples\n";
+    for (std::size_t k = 0; k < wall.size(); ++k)
+      if (wall.samples(k) > 0)
+        csv += num(wall.centre(k)) + "," + num(wall.mean(k)) + "," + num(wall.samples(k)) + "\n";
+    lbdem::write_file_atomic(prefix + "_wall_profile.csv", csv);
+    {
+      const std::size_t k = last_before(ptimes, to, "particle");
+      const lbdem::H5In s(snapshot(dir, "particles", k));
+      const auto x = s.vec3s("/position_m"), v = s.vec3s("/velocity_m_per_s");
+      const auto r = s.doubles("/radius_m");
+      csv = "x_m,y_m,z_m,radius_m,speed_m_per_s\n";
+      for (std::size_t p = 0; p < x.size(); ++p)
+        csv += num(x[p].x()) + "," + num(x[p].y()) + "," + num(x[p].z()) + "," + num(r[p]) + "," +
+               num(v[p].norm()) + "\n";
+      lbdem::write_file_atomic(prefix + "_positions.csv", csv);
+    }
   }
 
   // Gas: the last snapshot of the window.
@@ -183,17 +190,19 @@ std::string write_mill_maps(const MillMapOptions& o) {
   csv =
       "run_dir,from_s,to_s,particle_snapshots,samples,mean_speed_m_per_s,jet_samples,"
       "jet_mean_speed_m_per_s,gas_snapshot_s\n";
-  csv += run.dir + "," + num(ptimes[window.front()]) + "," + num(ptimes[window.back()]) + "," +
-         num(double(window.size())) + "," + num(all_n) + "," + num(all_n > 0 ? all / all_n : kNaN) +
-         "," + num(jet_n) + "," + num(jet_n > 0 ? jet / jet_n : kNaN) + "," + num(gas_t) + "\n";
+  const double first = particles ? ptimes[window.front()] : kNaN;
+  const double last = particles ? ptimes[window.back()] : kNaN;
+  csv += run.dir + "," + num(first) + "," + num(last) + "," + num(double(window.size())) + "," +
+         num(all_n) + "," + num(all_n > 0 ? all / all_n : kNaN) + "," + num(jet_n) + "," +
+         num(jet_n > 0 ? jet / jet_n : kNaN) + "," + num(gas_t) + "\n";
   lbdem::write_file_atomic(prefix + "_summary.csv", csv);
   char line[512];
   std::snprintf(line, sizeof line,
                 "%s: %zu particle snapshots in %s-%s s, mean speed %.4g m/s, in the jets %.4g m/s "
                 "(%g samples); gas at %s s\n",
-                run.name.c_str(), window.size(), num(ptimes[window.front()]).c_str(),
-                num(ptimes[window.back()]).c_str(), all_n > 0 ? all / all_n : kNaN,
-                jet_n > 0 ? jet / jet_n : kNaN, jet_n, num(gas_t).c_str());
+                run.name.c_str(), window.size(), num(first).c_str(), num(last).c_str(),
+                all_n > 0 ? all / all_n : kNaN, jet_n > 0 ? jet / jet_n : kNaN, jet_n,
+                num(gas_t).c_str());
   return line;
 }
 

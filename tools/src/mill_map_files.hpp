@@ -28,7 +28,8 @@ struct MillMapOptions {
 };
 
 /// Writes the CSVs (each atomically) and returns the one-line summary; ToolError on a bad option,
-/// a window without snapshots or a folder without particles.h5.
+/// a window without snapshots or a folder with neither particles.h5 nor fluid.h5. A run without
+/// particles gets the gas's CSVs only, and NaN for the particles' figures in the summary.
 std::string write_mill_maps(const MillMapOptions& o);
 
 }  // namespace lbdem::tools
