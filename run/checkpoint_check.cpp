@@ -170,6 +170,10 @@ std::optional<std::string> checkpoint_fault(const std::string& file) {
   }
 }
 
+double checkpoint_time(const H5In& f) {
+  return f.has_attr("time_s") ? f.attr_double("time_s") : f.attr_double("time_s", "/dem");
+}
+
 ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double end_time) {
   const auto refuse = [&](const std::string& problem, const std::string& fix) {
     return InputError("--resume", dir, problem, fix);
@@ -194,7 +198,7 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
   // The DEM state's layout: a checkpoint of an lbdem whose contact records had another shape is
   // refused here, before anything is written. A run without particles has no DEM state.
   const bool particles = f.has("/dem");
-  if (particles) {
+  if (particles)
     if (const std::int64_t layout = f.attr_int("layout_version", "/dem");
         layout != dem::DemSolver::kCheckpointLayout)
       throw refuse(name + " holds the DEM state in layout " + std::to_string(layout) +
@@ -202,10 +206,7 @@ ResumePoint check_resume(const std::string& dir, const RunIdentity& id, double e
                        std::to_string(dem::DemSolver::kCheckpointLayout) +
                        " (it was written by another lbdem build)",
                    "finish the run with the lbdem that began it, or " + fresh);
-    p.time_s = f.attr_double("time_s", "/dem");
-  } else {
-    p.time_s = f.attr_double("time_s");
-  }
+  p.time_s = checkpoint_time(f);
   // Its origin: scenario, physics, lattice.
   if (!f.has_attr("config_hash", kRunGroup)) {
     p.warnings.push_back("warning: " + name +

@@ -52,6 +52,10 @@ void save_identity(H5Out& f, const RunIdentity& id, std::int64_t particles, doub
 /// over positions and velocities by that; one with none as it is); else what is wrong.
 std::optional<std::string> checkpoint_fault(const std::string& file);
 
+/// The simulated time a checkpoint stands at [s]: the loop's clock (time_s), or, in a checkpoint
+/// written before the loop kept it, the DEM's.
+double checkpoint_time(const H5In& f);
+
 struct ResumePoint {
   std::string checkpoint;             // the generation to resume from
   std::vector<std::string> warnings;  // for log.txt, once it is open

@@ -120,7 +120,7 @@ bool read_command_keys(const Config& cfg, const std::string& name) {
 bool simulated_any(const std::string& dir) {
   if (fs::exists(dir + "/" + kPreviousCheckpoint)) return true;
   try {
-    return H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem") > 0;
+    return checkpoint_time(H5In(dir + "/checkpoint.h5")) > 0;
   } catch (const std::exception&) {
     return false;  // none, or none readable: nothing past the start was kept
   }

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/h5.hpp"
 #include "core/run_clock.hpp"
+#include "run/checkpoint_check.hpp"
 #include "run/run_cost.hpp"
 #include "run/run_manifest.hpp"
 #include "scenarios/run_command.hpp"
@@ -303,7 +304,7 @@ int run_study_case(const std::string& root, const StudyCase& c, const StudyOptio
   if (resumable || finished) {
     ro.resume = dir;
     try {
-      t_start = H5In(dir + "/checkpoint.h5").attr_double("time_s", "/dem");
+      t_start = checkpoint_time(H5In(dir + "/checkpoint.h5"));
     } catch (const std::exception&) {
       t_start = t_before;  // no checkpoint to read: run_scenario reports why
     }
