@@ -31,34 +31,4 @@ void for_thread_ranges(std::size_t n, const Work& work) {
   }
 }
 
-/// As for_thread_ranges, with shares of about equal cost instead of equal count:
-/// `cost_before(k)` is the summed cost of items [0, k) (an integer, non-decreasing in k), and
-/// each thread takes the items from the first whose cost_before reaches its equal part of the
-/// total up to the next thread's first. The shares still tile [0, n) in thread order (a thread
-/// may get none), so the callers' rule for determinism holds as for for_thread_ranges.
-template <class CostBefore, class Work>
-void for_cost_ranges(std::size_t n, const CostBefore& cost_before, const Work& work) {
-#pragma omp parallel
-  {
-    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto total = cost_before(n);
-    // The first item whose cost_before reaches part/nt of the total (bisection).
-    const auto split = [&](std::size_t part) {
-      if (part >= nt) return n;
-      const auto target = total / nt * part + total % nt * part / nt;
-      std::size_t lo = 0, hi = n;
-      while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (cost_before(mid) < target)
-          lo = mid + 1;
-        else
-          hi = mid;
-      }
-      return lo;
-    };
-    work(split(t), split(t + 1));
-  }
-}
-
 }  // namespace lbdem

@@ -276,13 +276,7 @@ void run_pair_pass(const Table& tab, const ParticleArrays& p, const Predicted& p
   sums.t.resize(n);
   rates.assign(energy_blocks(n), EnergyRates{});
   EnergyRates* r = rates.data();
-  // Blocks shared by listed pairs and rows (a crowded wall and a dilute core differ in pairs per
-  // particle several times over); any split gives the same results.
-  const auto cost = [&](std::size_t b) {
-    const std::size_t i = std::min(n, b * kEnergyBlock);
-    return std::uint64_t(pl.first[i]) + std::uint64_t(i);
-  };
-  for_cost_ranges(rates.size(), cost, [&](std::size_t b0, std::size_t b1) {
+  for_thread_ranges(rates.size(), [&](std::size_t b0, std::size_t b1) {
     pair_rows(tab, p, pr, s, pl, time, sums, r, b0, b1);
   });
 }
@@ -420,16 +414,9 @@ void run_particle_pass(const Table& tab, ParticleArrays& p, const Predicted& pr,
                        const RowSums& sums, const DemSettings& s, const std::vector<Wall>& walls,
                        const PairList& pl, WallContactList& wc, double time,
                        std::vector<EnergyRates>& rates) {
-  const std::size_t n = p.size();
-  rates.assign(energy_blocks(n), EnergyRates{});
+  rates.assign(energy_blocks(p.size()), EnergyRates{});
   EnergyRates* r = rates.data();
-  // Blocks shared by the j side's pairs, the wall entries and the particles (a wall entry of a
-  // mesh costs a closest-point search).
-  const auto cost = [&](std::size_t b) {
-    const std::size_t k = std::min(n, b * kEnergyBlock);
-    return std::uint64_t(pl.jfirst[k]) + 4 * std::uint64_t(wc.first[k]) + std::uint64_t(k);
-  };
-  for_cost_ranges(rates.size(), cost, [&](std::size_t b0, std::size_t b1) {
+  for_thread_ranges(rates.size(), [&](std::size_t b0, std::size_t b1) {
     particle_range(tab, p, pr, sums, s, walls, pl, wc, time, r, b0, b1);
   });
 }
