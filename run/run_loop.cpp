@@ -486,7 +486,7 @@ void RunLoop::write_checkpoint_file(const std::string& file, double stored0, boo
   f.commit();
 }
 
-void RunLoop::resume(const std::string& file, double& stored0) {
+long RunLoop::resume(const std::string& file, double& stored0) {
   const H5In f(file);
   const long rows = static_cast<long>(f.attr_int("timeseries_rows"));
   snapshot_times_ = f.doubles("/snapshot_times_s");
@@ -503,7 +503,6 @@ void RunLoop::resume(const std::string& file, double& stored0) {
   }
   const Instant t = now();
   cost_.resume(f, t.time_s);
-  ts_.open(dir_ + "/timeseries.csv", columns_, rows);
   if (dem_) {
     const auto prev = f.doubles("/rate_reference");
     prev_t_ = prev[0], prev_pp_ = std::int64_t(prev[1]), prev_pw_ = std::int64_t(prev[2]);
@@ -511,25 +510,27 @@ void RunLoop::resume(const std::string& file, double& stored0) {
   last_sound_time_ = t.time_s;
   log_->line("resumed from " + file + " at t = " + to_text(t.time_s) + " s (step " +
              std::to_string(t.step) + ")");
+  return rows;
 }
 
 int RunLoop::run(const RunContext& ctx) {
   log_ = ctx.log;
-  dir_ = ctx.dir;
-  columns_ = loop_columns(dem_ != nullptr);
+  std::vector<std::string> columns = loop_columns(dem_ != nullptr);
   for (const Observer* o : parts_.observers) {
     const auto c = o->row_columns();
-    columns_.insert(columns_.end(), c.begin(), c.end());
+    columns.insert(columns.end(), c.begin(), c.end());
   }
   double stored0 = 0;
   identity_ = ctx.identity;
   if (ctx.resume) {
     // The generation check_resume chose and verified (run_command), if it ran.
-    resume(ctx.checkpoint.empty() ? ctx.dir + "/checkpoint.h5" : ctx.checkpoint, stored0);
+    const long rows =
+        resume(ctx.checkpoint.empty() ? ctx.dir + "/checkpoint.h5" : ctx.checkpoint, stored0);
+    ts_.open(ctx.dir + "/timeseries.csv", columns, rows);
   } else {
     cost_.begin(now().time_s);
     if (dem_) stored0 = dem_->energy().stored();
-    ts_.open(ctx.dir + "/timeseries.csv", columns_, -1);
+    ts_.open(ctx.dir + "/timeseries.csv", columns, -1);
     write_row(stored0);
     write_snapshot(ctx.dir);
     write_checkpoint(ctx.dir, stored0);

@@ -125,9 +125,9 @@ class RunLoop {
   void write_snapshot(const std::string& dir);
   /// snapshots/particles_N.h5, particles.h5 linking them all, and particles.xdmf.
   void write_particles(const std::string& dir) const;
-  /// Loads the state of checkpoint `file` (the solvers', the observers', the series' and the
-  /// snapshots' counts) and reopens timeseries.csv after its rows.
-  void resume(const std::string& file, double& stored0);
+  /// Loads the state of checkpoint `file` (the solvers', the observers', the snapshots' times);
+  /// returns the timeseries.csv rows it covers.
+  long resume(const std::string& file, double& stored0);
   /// Keeps the current checkpoint as the previous generation, writes the new one and verifies
   /// it (reopened: format, every dataset against its checksum: checkpoint_check.hpp). `final`:
   /// written at run.end_time, which a resume of the finished run then recognises.
@@ -156,8 +156,6 @@ class RunLoop {
   std::int64_t prev_pp_ = 0, prev_pw_ = 0;
   double last_sound_time_ = 0;  // the last output instant that passed every check [s]
   TimeSeries ts_;
-  std::string dir_;                   // the run folder (while run() runs)
-  std::vector<std::string> columns_;  // timeseries.csv's: the loop's and the observers'
   Log* log_ = nullptr;
   const RunIdentity* identity_ = nullptr;
   RunCostMeter cost_;
