@@ -309,7 +309,7 @@ const std::vector<KeyDoc>& key_docs() {
       {"dem.max_energy_error", "",
        "the DEM watchdog stops a run when the energy-balance error exceeds this fraction of the "
        "energy moved (kinetic, elastic, dissipated and sources)"},
-      {"dem.skin", "m", "neighbour-list skin", "0.2 x the smallest radius"},
+      {"dem.skin", "m", "neighbour-list skin", "0.2 x the smallest radius (rheometer: 0.4 x)"},
       {"dem.sort_every", "",
        "neighbour-list rebuilds between spatial sorts of the particles (0: never)"},
       {"fill.lo", "m", "lower corner of the fill region", "box.lo"},
