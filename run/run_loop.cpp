@@ -14,6 +14,7 @@
 #include "core/h5.hpp"
 #include "core/progress.hpp"
 #include "core/time_series.hpp"
+#include "core/timer.hpp"
 #include "run/checkpoint_check.hpp"
 #include "run/run_manifest.hpp"
 #include "run/xdmf.hpp"
@@ -49,7 +50,7 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
       throw InputError(out.path("checkpoint_interval"), "\"" + v + "\"",
                        "expected a time in s, or \"never\"",
                        "give the checkpoint interval in s, e.g. run.end_time / 4 (the default)");
-    o.checkpoint_interval = std::numeric_limits<double>::infinity();
+    o.checkpoint_interval = o.checkpoint_wall_interval = std::numeric_limits<double>::infinity();
     return o;
   }
   o.checkpoint_interval =
@@ -57,6 +58,19 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
               Range::positive("give the checkpoint interval in s, e.g. run.end_time / 4 (the "
                               "default); a killed run loses at most this much (\"never\" "
                               "switches periodic checkpoints off)"));
+  // A long run's simulated interval may take hours of wall time: this bounds the work lost.
+  if (out.is_string("checkpoint_wall_interval")) {
+    if (const std::string v = out.get_string("checkpoint_wall_interval", ""); v != "never")
+      throw InputError(out.path("checkpoint_wall_interval"), "\"" + v + "\"",
+                       "expected a wall time in s, or \"never\"",
+                       "give the wall time between checkpoints in s, e.g. 900 (the default)");
+    o.checkpoint_wall_interval = std::numeric_limits<double>::infinity();
+    return o;
+  }
+  o.checkpoint_wall_interval = out.get(
+      "checkpoint_wall_interval", 900.0,
+      Range::positive("give the wall time between checkpoints in s, e.g. 900 (the default); "
+                      "\"never\" writes them by simulated time only"));
   return o;
 }
 
@@ -545,6 +559,7 @@ int RunLoop::run(const RunContext& ctx) {
   // A stop waits for the next cycle boundary (at most cycle - 1 DEM steps): only there do all the
   // solvers stand at one time, as a checkpoint needs (a coupled run's exchange interval).
   const std::int64_t cycle = parts_.gas ? parts_.gas->cycle() : 1;
+  Stopwatch since_checkpoint;  // stepping wall time since the last checkpoint
   while (now().step < last_step_) {
     // A stop waits for a cycle boundary, or is taken inside a DEM step's gas work (the gas then
     // stands behind the coming DEM step; its checkpoint carries the rest).
@@ -576,7 +591,12 @@ int RunLoop::run(const RunContext& ctx) {
     extra_row_ = last && s % every_row_ != 0;
     extra_snapshot_ = last && s % every_snapshot_ != 0;
     const bool row = s % every_row_ == 0 || last, snapshot = s % every_snapshot_ == 0 || last;
-    const bool checkpoint = (every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last;
+    // Checkpoints by simulated time, and one after checkpoint_wall_interval of wall time at a
+    // cycle boundary (a checkpoint at any boundary resumes bitwise, as a signal stop's does).
+    const bool wall_due =
+        s % cycle == 0 && since_checkpoint.seconds() >= out_.checkpoint_wall_interval;
+    const bool checkpoint =
+        (every_checkpoint_ > 0 && s % every_checkpoint_ == 0) || last || wall_due;
     PhaseLap lap;
     if (row || snapshot || checkpoint) check_health(progress, stored0);
     if (row) write_row(stored0, !extra_row_);
@@ -584,6 +604,7 @@ int RunLoop::run(const RunContext& ctx) {
     if (checkpoint) {
       write_checkpoint(ctx.dir, stored0, last);
       if (dem_) dem_->collisions().write(ctx.dir + "/collisions.h5", dem_->time());
+      since_checkpoint.reset();
     }
     lap.to(Phase::output);
     progress.update(now().time_s, work);

@@ -56,6 +56,10 @@ struct OutputSettings {
   double snapshot_interval = 0.1;  // particle snapshot interval [s]
   // [s], > 0; infinite for "never" (then only at the start, the end and a signal stop)
   double checkpoint_interval = 0;
+  // [s] of stepping wall time (suspensions left out) after which a checkpoint is written at the
+  // next cycle boundary whatever the simulated interval, so a run killed outright loses at most
+  // this much work; infinite for "never" or when checkpoint_interval is "never".
+  double checkpoint_wall_interval = 900;
   static OutputSettings from(const Config& run, const Config& out);
 };
 

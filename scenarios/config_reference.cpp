@@ -248,9 +248,14 @@ const std::vector<KeyDoc>& key_docs() {
       {"output.snapshot_interval", "s", "time between particle (and gas) snapshots",
        "end_time / 10"},
       {"output.checkpoint_interval", "s",
-       "time between checkpoints; a killed run loses at most this much; \"never\": none but at "
-       "the start, the end and a signal stop (warned about)",
+       "simulated time between checkpoints; \"never\": none but at the start, the end and a "
+       "signal stop (warned about; output.checkpoint_wall_interval is then off too)",
        "end_time / 4"},
+      {"output.checkpoint_wall_interval", "s",
+       "wall time of stepping (suspensions left out) after which a checkpoint is written anyway; "
+       "a run killed outright loses at most this much work, or one checkpoint_interval if that "
+       "is shorter; \"never\": by simulated time only",
+       "900"},
       {"output.collisions.rows", "",
        "write one row per contact to collisions.h5 (large: a dense bed makes about 1e8 contacts in "
        "a few hundredths of a second)"},

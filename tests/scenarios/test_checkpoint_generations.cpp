@@ -63,3 +63,31 @@ TEST_CASE("a resume takes the newest checkpoint that verifies, says which, or re
   CHECK(none.err.find("no checkpoint verifies") != std::string::npos);
   fs::remove_all(out);
 }
+
+// output.checkpoint_wall_interval: a checkpoint after that much wall time at whatever step the run
+// has reached. At 1 ns one is written every step, so the generation before the last is one step
+// (6.7 us) before the end instead of the start; the results are those of the run without.
+TEST_CASE("a checkpoint is written after checkpoint_wall_interval of wall time, results unchanged",
+          "[scenarios][checkpoint]") {
+  const std::string a = tmpdir("wall_checkpoint_off"), b = tmpdir("wall_checkpoint_on");
+  const std::string run = lbdem::test::beads_near_floor(150) +
+                          " --set run.end_time=0.002 --set output.checkpoint_interval=0.002";
+  REQUIRE(cli("run box --out " + a + run).code == 0);
+  REQUIRE(cli("run box --out " + b + run + " --set output.checkpoint_wall_interval=1e-9").code ==
+          0);
+  CHECK(checkpoint_time(a + "/checkpoint.prev.h5") == 0.0);
+  const double end = checkpoint_time(b + "/checkpoint.h5");
+  CHECK(end == Approx(0.002).margin(1e-5));
+  CHECK(checkpoint_time(b + "/checkpoint.prev.h5") == Approx(end - 6.7e-6).margin(1e-6));
+  CHECK(read_text(a + "/timeseries.csv") == read_text(b + "/timeseries.csv"));
+  // Bad values: one line naming the key, exit 2, nothing written.
+  for (const std::string v : {"0", "'\"often\"'"}) {
+    const std::string c = tmpdir("wall_checkpoint_bad");
+    const auto r = cli("run box --out " + c + run + " --set output.checkpoint_wall_interval=" + v);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("'output.checkpoint_wall_interval'") != std::string::npos);
+    CHECK(!fs::exists(c));
+  }
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
