@@ -36,6 +36,17 @@ bool stop_requested() {
   return g_stop_signal != 0;
 }
 
+namespace {
+// A positive time [s] at `key`, `fallback` if absent, or infinity for the string "never".
+double seconds_or_never(const Config& out, const std::string& key, double fallback,
+                        const std::string& fix) {
+  if (!out.is_string(key)) return out.get(key, fallback, Range::positive(fix));
+  if (const std::string v = out.get_string(key, ""); v != "never")
+    throw InputError(out.path(key), "\"" + v + "\"", "expected a time in s, or \"never\"", fix);
+  return std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
 OutputSettings OutputSettings::from(const Config& run, const Config& out) {
   OutputSettings o;
   o.end_time = run.require("end_time", Range::positive("give the simulated end time in seconds"));
@@ -43,34 +54,20 @@ OutputSettings OutputSettings::from(const Config& run, const Config& out) {
       out.get("interval", o.end_time / 200, Range::positive("give the time-series interval in s"));
   o.snapshot_interval = out.get("snapshot_interval", o.end_time / 10,
                                 Range::positive("give the snapshot interval in s"));
-  // Periodic checkpoints are what a killed run resumes from: switched off only by name ("never",
-  // which the run command warns about), never by a 0 that may be a slip.
-  if (out.is_string("checkpoint_interval")) {
-    if (const std::string v = out.get_string("checkpoint_interval", ""); v != "never")
-      throw InputError(out.path("checkpoint_interval"), "\"" + v + "\"",
-                       "expected a time in s, or \"never\"",
-                       "give the checkpoint interval in s, e.g. run.end_time / 4 (the default)");
-    o.checkpoint_interval = o.checkpoint_wall_interval = std::numeric_limits<double>::infinity();
-    return o;
-  }
-  o.checkpoint_interval =
-      out.get("checkpoint_interval", o.end_time / 4,
-              Range::positive("give the checkpoint interval in s, e.g. run.end_time / 4 (the "
-                              "default); a killed run loses at most this much (\"never\" "
-                              "switches periodic checkpoints off)"));
-  // A long run's simulated interval may take hours of wall time: this bounds the work lost.
-  if (out.is_string("checkpoint_wall_interval")) {
-    if (const std::string v = out.get_string("checkpoint_wall_interval", ""); v != "never")
-      throw InputError(out.path("checkpoint_wall_interval"), "\"" + v + "\"",
-                       "expected a wall time in s, or \"never\"",
-                       "give the wall time between checkpoints in s, e.g. 900 (the default)");
-    o.checkpoint_wall_interval = std::numeric_limits<double>::infinity();
-    return o;
-  }
-  o.checkpoint_wall_interval = out.get(
-      "checkpoint_wall_interval", 900.0,
-      Range::positive("give the wall time between checkpoints in s, e.g. 900 (the default); "
-                      "\"never\" writes them by simulated time only"));
+  // Checkpoints are what a killed run resumes from: switched off only by name ("never", which the
+  // run command warns about), never by a 0 that may be a slip. "never" for the simulated interval
+  // turns the wall-time ones off too; the wall-time interval bounds the work lost where the
+  // simulated one takes hours.
+  o.checkpoint_interval = seconds_or_never(
+      out, "checkpoint_interval", o.end_time / 4,
+      "give the checkpoint interval in s, e.g. run.end_time / 4 (the default); \"never\" "
+      "switches periodic checkpoints off");
+  o.checkpoint_wall_interval =
+      std::isinf(o.checkpoint_interval)
+          ? o.checkpoint_interval
+          : seconds_or_never(out, "checkpoint_wall_interval", 900.0,
+                             "give the wall time between checkpoints in s, e.g. 900 (the "
+                             "default); \"never\" writes them by simulated time only");
   return o;
 }
 

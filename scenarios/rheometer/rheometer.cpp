@@ -167,7 +167,7 @@ RheometerScenario::RheometerScenario(const Config& cfg) {
   step_ = choose_time_step(dcfg, s.contact, mats, wall_mats, r_min, dt_factor, implausible_);
   s.dt = step_.dt;
   // The impeller flings the powder across a 0.2 r skin every few steps; at 0.4 r the default run
-  // rebuilds half as often for a 5-9 % longer row walk: 6-10 % faster on 2 threads (0.6 r lies
+  // rebuilds half as often for a 5-10 % longer row walk: 6-10 % faster on 2 threads (0.6 r lies
   // between them; docs/performance.md).
   s.skin = dcfg.get("skin", 0.4 * r_min, Range::positive("give the neighbour skin in m"));
   s.sort_every = static_cast<int>(dcfg.get_int("sort_every", 1, Range::closed(0, 1e6)));
