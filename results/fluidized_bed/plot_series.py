@@ -3,7 +3,8 @@
 pressure drop over time for the Bond-number-10 original against its coarse-grained runs (left)
 and for the cohesionless CG 2-4 runs (right); displaced_gas.png, the cohesionless CG 2, 3 and 4 beds
 before and with the displaced gas; original_and_cg.png, the cohesionless original against CG 2, 3
-and 4 with the current coupling, with the lateral structure of their gas fraction
+and 4 with the current coupling (and CG 2 with the original's kernel width), with the lateral
+structure of their gas fraction
 (lateral_structure.csv, from lateral_structure.py). Run from the repository root:
     /usr/bin/python3 results/fluidized_bed/plot_series.py"""
 import os
@@ -73,24 +74,28 @@ fig.savefig(out, dpi=110)
 print("wrote", out)
 
 # The cohesionless original against CG 2-4 with the current coupling: bed height, pressure drop,
-# and the lateral structure of the gas fraction (the within-row sd, lateral_structure.py).
+# and the lateral structure of the gas fraction (the within-row sd of 0.8 mm cubes, the same scale
+# for every kernel width; lateral_structure.py).
 fig, ax = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
 cases = [("cg1_displaced", "cg1", "original (CG 1)"), ("cg2_displaced", "cg2", "CG 2"),
-         ("cg3_displaced", "cg3", "CG 3"), ("cg4_displaced", "cg4", "CG 4")]
+         ("cg3_displaced", "cg3", "CG 3"), ("cg4_displaced", "cg4", "CG 4"),
+         ("cg2_kernel02", "cg2_kernel02", "CG 2, the original's 0.2 mm kernel")]
 lateral = np.genfromtxt(os.path.join(HERE, "lateral_structure.csv"), delimiter=",", names=True,
                         dtype=None, encoding="utf-8")
-for series_name, case, label in cases:
+for k, (series_name, case, label) in enumerate(cases):
     t, h, dp = series(series_name)
     keep = t >= 0.15
-    ax[0].plot(t[keep], h[keep], lw=1, label=label)
-    ax[1].plot(t[keep], dp[keep], lw=0.8, label=label)
+    colour = f"C{k}"
+    ax[0].plot(t[keep], h[keep], color=colour, lw=1, label=label)
+    ax[1].plot(t[keep], dp[keep], color=colour, lw=0.8, label=label)
     rows = lateral[lateral["case"] == case]
-    if len(rows):
-        ax[2].semilogy(rows["time_s"], rows["row_sd"], "o-", ms=3, lw=1, label=label)
+    if len(rows) and np.isfinite(rows["block_row_sd"]).any():
+        ax[2].semilogy(rows["time_s"], rows["block_row_sd"], "o-", color=colour, ms=3, lw=1,
+                       label=label)
 ax[0].set_ylabel("bed height [mm]")
 ax[1].set_ylabel("pressure drop [Pa]")
 ax[1].axhline(WEIGHT, color="k", ls=":", lw=0.8, label="weight / area + gas head")
-ax[2].set_ylabel("gas fraction sd within a row")
+ax[2].set_ylabel("gas fraction sd within a row\n(0.8 mm cubes)")
 ax[2].set_xlabel("time [s]")
 ax[0].legend(fontsize=8)
 ax[2].legend(fontsize=8)
