@@ -57,11 +57,11 @@ def main(folders):
     for folder in folders:
         snaps = os.path.join(folder, "snapshots")
         names = sorted(n for n in os.listdir(snaps) if n.startswith("fluid_") and n.endswith(".h5"))
+        dx = cell_size(folder)
         for name in names:
             with h5py.File(os.path.join(snaps, name), "r") as f:
                 eps = f["porosity"][:]  # (z, y, x)
                 t = float(f.attrs["time_s"])
-            dx = cell_size(folder)
             rows = rows_of_bed(eps)
             if rows is None:
                 continue

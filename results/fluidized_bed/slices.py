@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Draws slices.png: vertical slices of the coupling's gas fraction through fluidized-bed runs at
-given times, each through the row of the bed's largest gas fraction (its most open void). Takes
+given times, each through the row of the bed's largest gas fraction (its most open void), the bed
+being the rows lateral_structure.py takes. Takes
 LABEL=RUN_DIR@TIME arguments (the snapshot nearest TIME, from RUN_DIR/snapshots/fluid_*.h5) and
 writes slices.png beside this script:
     /usr/bin/python3 results/fluidized_bed/slices.py "original=runs/studies/fluidized_bed/cg1@0.7" ...
 """
 import os
 import sys
-import tomllib
 
 import h5py
 import matplotlib
@@ -17,6 +17,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from lateral_structure import cell_size, rows_of_bed  # noqa: E402  (the same bed rows)
 TOP = 8e-3  # [m] drawn height
 
 
@@ -47,10 +49,9 @@ def main(args):
         with h5py.File(path, "r") as f:
             eps = f["porosity"][:]  # (z, y, x)
         nz, ny, nx = eps.shape
-        with open(os.path.join(folder, "config.toml"), "rb") as f:
-            dx = float(tomllib.load(f)["fluid"]["dx"])
-        bed = eps[: int(0.85 * np.argmax(eps.mean(axis=(1, 2)) > 0.7))]
-        y = np.unravel_index(np.argmax(bed), bed.shape)[1] if bed.size else ny // 2
+        dx = cell_size(folder)
+        rows = rows_of_bed(eps)
+        y = ny // 2 if rows is None else np.unravel_index(np.argmax(eps[rows]), eps[rows].shape)[1]
         top = min(nz, int(round(TOP / dx)))
         image = ax[0, k].imshow(eps[:top, y, :], origin="lower", cmap="viridis", vmin=0.35,
                                 vmax=1.0, extent=(0, nx * dx * 1e3, 0, top * dx * 1e3))
