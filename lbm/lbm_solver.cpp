@@ -139,6 +139,7 @@ void LbmSolver::set_outlet_backflow(int body, bool allowed) {
 }
 
 void LbmSolver::set_cell(int x, int y, int z, int body) {
+  settle_mass_sources();
   if (body != 0)
     for (const MassSource& m : mass_sources_)
       if (m.x == x && m.y == y && m.z == z)
@@ -224,6 +225,7 @@ void LbmSolver::rebuild_links() {
 
 void LbmSolver::initialize(
     const std::function<void(int x, int y, int z, double& rho, Vec3& u)>& init) {
+  mass_pending_ = false;
   const Grid& g = grid();
   const double rho_w = settings_.wall_density;
   with_pdf([&](auto& pdf) {
@@ -425,7 +427,9 @@ void LbmSolver::step() {
   with_lattice([&](const auto& l) {
     with_forcing(l, [&](const auto& forcing) {
       for (Body& b : bodies_)
-        if (b.outlet_density > 0) sample_outlet_velocity(l.pdf, state_, forcing, b.outlet);
+        if (b.outlet_density > 0)
+          sample_outlet_velocity(l.pdf, state_, forcing, b.outlet,
+                                 mass_pending_ ? mass_source_storage_.data() : nullptr);
     });
   });
   lap.to(Phase::lbm_boundaries);
@@ -485,7 +489,17 @@ void LbmSolver::set_mass_source_field(std::span<const double> mass) {
                                     std::to_string(y) + ", " + std::to_string(z) + ") " +
                                     (std::isfinite(m) ? "is solid" : "is not finite"));
       }
+  settle_mass_sources();  // the pending step is the previous field's
   mass_source_field_.assign(mass.begin(), mass.end());
+  mass_source_storage_.clear();
+  if (!mass.empty()) {
+    mass_source_storage_.assign(std::size_t(g.storage_cells()), 0.0);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x)
+          mass_source_storage_[std::size_t(g.index(x, y, z))] =
+              mass[std::size_t(g.compact_index(x, y, z))];
+  }
   mass_source_field_sum_ = deterministic_sum(
       mass_source_field_.size(), [&](std::size_t c) { return mass_source_field_[c]; }, 0.0);
 }
@@ -506,27 +520,44 @@ void LbmSolver::add_mass_sources() {
       read_pointers(pdf, state_, m.x, m.y, m.z, in);
       for (int q = 0; q < kQ; ++q) {
         T& slot = *const_cast<T*>(in[q]);
-        slot = PopulationCodec<T>::store(PopulationCodec<T>::load(slot, q) + kW[q] * m.mass, q);
+        slot = with_mass(slot, q, T(m.mass));
       }
     }
-    if (mass_source_field_.empty()) return;
-    // Every cell: each writes only its own populations, so the rows go to the threads. Row by row
-    // with one set of addresses per x range (aa_pattern.hpp), not per cell: the coupling's
-    // displaced gas puts a source in every cell of a bed, and this pass was 3-5 % of the jet
-    // mill's run time with per-cell addressing.
-    const Grid& g = grid();
-    const double* mass = mass_source_field_.data();
+  });
+  // The field's share waits for the next step's collision (or settle_mass_sources()).
+  mass_pending_ = !mass_source_field_.empty();
+}
+
+void LbmSolver::settle_mass_sources() const {
+  if (!mass_pending_) return;
+  // The populations as the next step reads them are the solver's state, which a reader of it
+  // brings up to date: the pass changes no observable value.
+  const_cast<LbmSolver*>(this)->add_mass_source_field();
+}
+
+void LbmSolver::add_mass_source_field() {
+  mass_pending_ = false;
+  // Each cell writes only its own populations, so the rows go to the threads. Row by row with one
+  // set of addresses per x range (aa_pattern.hpp), direction by direction along x so that the
+  // update runs in vector lanes, trimmed to the range's first and last source (rows away from the
+  // particles hold none).
+  const Grid& g = grid();
+  const double* mass = mass_source_storage_.data();
+  with_pdf([&](auto& pdf) {
+    using T = typename std::decay_t<decltype(pdf)>::value_type;
     for_each_row(g, [&](int y, int z) {
       for_each_x_range(g, [&](int x0, int x1) {
-        const double* m = mass + g.compact_index(x0, y, z);  // x is contiguous in both orders
+        const double* m = mass + g.index(x0, y, z);
+        int lo = 0, hi = x1 - x0;
+        while (lo < hi && m[lo] == 0) ++lo;
+        while (hi > lo && m[hi - 1] == 0) --hi;
+        if (lo == hi) return;
         const T* in[kQ];
         read_pointers(pdf, state_, x0, y, z, in);
-        for (int i = 0; i < x1 - x0; ++i) {
-          if (m[i] == 0) continue;
-          for (int q = 0; q < kQ; ++q) {
-            T& slot = const_cast<T*>(in[q])[i];
-            slot = PopulationCodec<T>::store(PopulationCodec<T>::load(slot, q) + kW[q] * m[i], q);
-          }
+        for (int q = 0; q < kQ; ++q) {
+          T* const slot = const_cast<T*>(in[q]);
+#pragma omp simd
+          for (int i = lo; i < hi; ++i) slot[i] = with_mass(slot[i], q, T(m[i]));
         }
       });
     });
@@ -534,6 +565,7 @@ void LbmSolver::add_mass_sources() {
 }
 
 std::vector<double> LbmSolver::level_flux(std::span<const int> level, int levels) const {
+  settle_mass_sources();
   std::vector<AddedMass> added;
   added.reserve(mass_sources_.size());
   for (const MassSource& m : mass_sources_) added.push_back({grid().index(m.x, m.y, m.z), m.mass});
@@ -548,6 +580,7 @@ std::vector<double> LbmSolver::level_flux(std::span<const int> level, int levels
 }
 
 void LbmSolver::cell_populations(int x, int y, int z, double (&f)[kQ]) const {
+  settle_mass_sources();
   with_pdf([&](const auto& pdf) {
     using T = typename std::decay_t<decltype(pdf)>::value_type;
     const T* in[kQ];
@@ -557,11 +590,13 @@ void LbmSolver::cell_populations(int x, int y, int z, double (&f)[kQ]) const {
 }
 
 std::vector<double> LbmSolver::stored_slots() const {
+  settle_mass_sources();
   return with_pdf(
       [](const auto& pdf) { return std::vector<double>(pdf.data(), pdf.data() + pdf.size()); });
 }
 
 void LbmSolver::load_state(const std::vector<double>& slots, AaState s, long steps) {
+  mass_pending_ = false;  // the slots are the state the next step reads
   with_pdf([&](auto& pdf) {
     using T = typename std::decay_t<decltype(pdf)>::value_type;
     if (Index(slots.size()) != pdf.size())
@@ -575,6 +610,7 @@ void LbmSolver::load_state(const std::vector<double>& slots, AaState s, long ste
 
 std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rho_max,
                                                        double u_max) const {
+  settle_mass_sources();
   const Grid& g = grid();
   // First bad x of every row (-1: none); rows are independent, so any thread split finds the same.
   std::vector<int> first_bad(std::size_t(g.ny()) * std::size_t(g.nz()), -1);
@@ -605,6 +641,7 @@ std::optional<UnhealthyCell> LbmSolver::find_unhealthy(double rho_min, double rh
 }
 
 CellMoments LbmSolver::moments(int x, int y, int z) const {
+  settle_mass_sources();
   CellMoments m{};
   with_lattice([&](const auto& l) {
     with_forcing(
@@ -614,26 +651,31 @@ CellMoments LbmSolver::moments(int x, int y, int z) const {
 }
 
 void LbmSolver::density(std::vector<double>& rho) const {
+  settle_mass_sources();
   // rho = sum_q f_q whatever the force (cell.hpp): the forcing policy's moments would only add
   // the velocity's work.
   with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, &rho, nullptr); });
 }
 
 void LbmSolver::velocity(std::vector<Vec3>& u) const {
+  settle_mass_sources();
   with_lattice([&](const auto& l) {
     with_forcing(l, [&](const auto& f) { moment_fields(l.pdf, state_, f, flags_, nullptr, &u); });
   });
 }
 
 void LbmSolver::raw_velocity(std::vector<Vec3>& u) const {
+  settle_mass_sources();
   with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, nullptr, &u); });
 }
 
 void LbmSolver::raw_moments(std::vector<double>& rho, std::vector<Vec3>& u) const {
+  settle_mass_sources();
   with_pdf([&](const auto& pdf) { moment_fields(pdf, state_, NoForce{}, flags_, &rho, &u); });
 }
 
 Vec3 LbmSolver::raw_momentum() const {
+  settle_mass_sources();
   // NoForce moments: rho u = sum_q c_q f_q, with no half-force shift and no porous scaling.
   std::vector<double> rho;
   std::vector<Vec3> u;
@@ -643,6 +685,7 @@ Vec3 LbmSolver::raw_momentum() const {
 }
 
 double LbmSolver::total_mass() const {
+  settle_mass_sources();
   std::vector<double> rho;
   density(rho);
   return lbm::total_mass(rho);

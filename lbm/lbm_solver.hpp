@@ -251,6 +251,10 @@ class LbmSolver {
   };
   void rebuild_links();
   void add_mass_sources();
+  /// Adds the source field's pending step to the populations, if one is pending: every reader of
+  /// the populations outside step() calls it first, so that they see what the next step reads.
+  void settle_mass_sources() const;
+  void add_mass_source_field();
   void set_wall_velocity_terms(Body& b);
   /// Calls fn(forcing) with the cheapest policy that represents the current forces, its per-cell
   /// fields those of lat; with `accumulate`, a porous policy also adds to the velocity sums (the
@@ -285,8 +289,13 @@ class LbmSolver {
   std::vector<Body> bodies_;
   std::array<int, 6> face_body_{};
   std::vector<MassSource> mass_sources_;
-  std::vector<double> mass_source_field_;  // per interior cell, compact order; empty: none
-  double mass_source_field_sum_ = 0;       // its sum, bitwise independent of the thread count
+  std::vector<double> mass_source_field_;    // per interior cell, compact order; empty: none
+  double mass_source_field_sum_ = 0;         // its sum, bitwise independent of the thread count
+  std::vector<double> mass_source_storage_;  // the field per storage cell (what the kernels read)
+  // The field's share of the last step, not yet in the populations: the next step's collision
+  // adds it as it loads them (forcing/mass_source.hpp), or settle_mass_sources() before anything
+  // else reads them.
+  mutable bool mass_pending_ = false;
   std::vector<double> eps_;  // per storage cell, when porosity is enabled (the kernel reads 1/eps)
   // Whether the lattice keeps rho and u / eps of the last collision (a body has the wall function).
   bool keep_moments_ = false;

@@ -8,22 +8,27 @@
 #include "lbm/aa_pattern.hpp"
 #include "lbm/boundary/flags.hpp"
 #include "lbm/cell.hpp"
+#include "lbm/forcing/mass_source.hpp"
 #include "lbm/pdf_field.hpp"
 
 #include <vector>
 
 namespace lbdem::lbm {
 
-/// Moments of cell (x, y, z) in state s with the force policy of the step that follows.
+/// Moments of cell (x, y, z) in state s with the force policy of the step that follows; with
+/// pending_mass (per storage cell), of the populations with those mass sources added first
+/// (forcing/mass_source.hpp).
 template <class T, class Forcing>
 CellMoments cell_moments_at(const PdfField<T>& pdf, AaState s, const Forcing& forcing, int x, int y,
-                            int z) {
+                            int z, const double* pending_mass = nullptr) {
   const T* in[kQ];
   read_pointers(pdf, s, x, y, z, in);  // a single cell is always one x range
+  const Index n = pdf.grid().index(x, y, z);
+  const T m = pending_mass ? T(pending_mass[n]) : T(0);
   double f[kQ];
-  for (int q = 0; q < kQ; ++q) f[q] = PopulationCodec<T>::load(*in[q], q);
+  for (int q = 0; q < kQ; ++q) f[q] = PopulationCodec<T>::load(with_mass(*in[q], q, m), q);
   CellForce force;
-  return forcing.moments(f, pdf.grid().index(x, y, z), force);
+  return forcing.moments(f, n, force);
 }
 
 namespace detail {

@@ -1,6 +1,7 @@
 #pragma once
 // LbmSolver's templated passes, for lbm_solver.cpp and for the translation units that compile one
 // collision operator's pass with flags of its own (collide_les.cpp). Internal to lbm/.
+#include "lbm/forcing/mass_source.hpp"
 #include "lbm/forcing/moment_store.hpp"
 #include "lbm/forcing/porous.hpp"
 #include "lbm/lbm_solver.hpp"
@@ -46,6 +47,14 @@ void LbmSolver::with_forcing(const LatticeFields<T>& lat, Fn&& fn, bool accumula
     fn(NoForce{});
 }
 
+/// The forcing policies whose collision adds the pending mass sources itself (WithMassSource):
+/// those of a coupled step, porous with the velocity sums, the only runs with a source field. Any
+/// other has them added by a pass before it (one more compiled kernel per policy otherwise).
+template <class F>
+inline constexpr bool kFusesMassSource = false;
+template <class S, class Base, bool kF>
+inline constexpr bool kFusesMassSource<PorousMedium<S, Base, true, kF>> = true;
+
 template <class Op>
 void LbmSolver::collide_pass(const Op& op) {
   with_lattice([&](auto& lat) {
@@ -53,10 +62,20 @@ void LbmSolver::collide_pass(const Op& op) {
     with_forcing(
         lat,
         [&](const auto& forcing) {
-          if (!keep_moments_) return stream_collide(lat.pdf, state_, op, forcing, &runs_);
-          const StoreMoments<std::decay_t<decltype(forcing)>, T> store{forcing,
-                                                                       lat.moment_fields()};
-          stream_collide(lat.pdf, state_, op, store, &runs_);
+          using F = std::decay_t<decltype(forcing)>;
+          const auto collide = [&](const auto& policy) {
+            using P = std::decay_t<decltype(policy)>;
+            if constexpr (kFusesMassSource<F>)
+              if (mass_pending_) {
+                mass_pending_ = false;
+                const WithMassSource<P> sourced{policy, mass_source_storage_.data()};
+                return stream_collide(lat.pdf, state_, op, sourced, &runs_);
+              }
+            settle_mass_sources();
+            stream_collide(lat.pdf, state_, op, policy, &runs_);
+          };
+          if (!keep_moments_) return collide(forcing);
+          collide(StoreMoments<F, T>{forcing, lat.moment_fields()});
         },
         true);
   });

@@ -36,6 +36,8 @@ template <CollisionOperator C, class Forcing, class T>
                                                 Index n0, int i) {
   T f[kQ];
   static_for<kQ>([&](auto q) LBDEM_INLINE { f[q] = in[q][i]; });
+  // A step's pending mass sources, added as the populations are loaded (forcing/mass_source.hpp).
+  if constexpr (requires { forcing.add_mass(f, n0 + i); }) forcing.add_mass(f, n0 + i);
   CellForceT<T> force;
   const CellMomentsT<T> m = forcing.moments(f, n0 + i, force);
   coll.template relax<Forcing::kActive>(f, m, force);

@@ -65,17 +65,18 @@ struct PressureOutlet {
 PressureOutlet build_outlet(const BounceBackLinks& links, const FlagField& flags, double density,
                             bool extrapolate = true, bool backflow = true);
 
-/// Samples u(x, t) of every listed cell from state s (before the step), with the step's forcing.
+/// Samples u(x, t) of every listed cell from state s (before the step), with the step's forcing
+/// and the mass sources the step adds as it collides (pending_mass, per storage cell; null: none).
 /// Each cell writes its own entry: the same values at any thread count. A small outlet stays on one
 /// thread, where a parallel region would cost more than the 19 loads per cell.
 template <class T, class Forcing>
 void sample_outlet_velocity(const PdfField<T>& pdf, AaState s, const Forcing& forcing,
-                            PressureOutlet& o) {
+                            PressureOutlet& o, const double* pending_mass = nullptr) {
   const auto n = static_cast<std::ptrdiff_t>(o.cells.size());
 #pragma omp parallel for schedule(static) if (n > 1024)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto [x, y, z] = o.cells[std::size_t(i)];
-    const CellMoments m = cell_moments_at(pdf, s, forcing, x, y, z);
+    const CellMoments m = cell_moments_at(pdf, s, forcing, x, y, z, pending_mass);
     o.velocity[std::size_t(i)] = Vec3(m.ux, m.uy, m.uz);
   }
 }
